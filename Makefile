@@ -1,0 +1,38 @@
+# Thin wrapper over CMake: the README's two commands (`make demo`, `make test`)
+# work from a clean clone; each installs missing system packages first.
+BUILD ?= build
+JOBS  ?= $(shell nproc)
+CMAKE_FLAGS ?=
+
+.PHONY: all deps build demo test test-sanitize bench clean
+
+all: build
+
+deps:
+	@bash scripts/install-deps.sh
+
+$(BUILD)/CMakeCache.txt: | deps
+	cmake -S . -B $(BUILD) -DCMAKE_BUILD_TYPE=Release $(CMAKE_FLAGS)
+
+build: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS)
+
+# Until `recoil run` exists, the demo is a turntable of the Stanford bunny.
+demo: build
+	$(BUILD)/recoil turntable assets/meshes/bunny.obj --frames 60 -o output/bunny-turntable
+	@echo "frames written to output/bunny-turntable/"
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The same suite under AddressSanitizer + UndefinedBehaviorSanitizer (CI's second step).
+test-sanitize: deps
+	cmake -S . -B build-asan -DCMAKE_BUILD_TYPE=RelWithDebInfo -DRECOIL_SANITIZE=ON -DRECOIL_BUILD_BENCH=OFF
+	cmake --build build-asan -j $(JOBS)
+	cd build-asan && ASAN_OPTIONS=detect_leaks=0 ctest --output-on-failure -j $(JOBS) -LE slow
+
+bench: build
+	$(BUILD)/recoil_bench
+
+clean:
+	rm -rf $(BUILD) build-asan

@@ -1,0 +1,21 @@
+#pragma once
+// The subcommands of the recoil executable. Each add_*_command registers one
+// CLI11 subcommand; when the user picks it, its callback stores the work to do
+// in `action`, which main() runs inside the one error handler (exit codes:
+// SPEC.md section 5).
+#include <CLI/CLI.hpp>
+#include <functional>
+
+namespace recoil::cli {
+
+struct GlobalOptions {
+  bool quiet = false;     // -q: no progress bar, no summary lines
+  bool log_json = false;  // --log-json: machine-readable progress on stderr
+};
+
+using Action = std::function<int()>;
+
+void add_info_command(CLI::App& app, const GlobalOptions& global, Action& action);
+void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& action);
+
+}  // namespace recoil::cli

@@ -1,0 +1,41 @@
+// recoil: the command-line entry point. Parses the command line, runs the
+// chosen subcommand and turns every failure into one `recoil: error:` line
+// and the exit code of SPEC.md section 5.
+#include <iostream>
+
+#include "cli/commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  using namespace recoil;
+  CLI::App app{"recoil: simulate elastic and rigid bodies colliding with friction, and render every frame to PNG."};
+  app.set_version_flag("--version", std::string("recoil ") + RECOIL_VERSION + " (" + RECOIL_GIT + ")");
+  app.require_subcommand(1);
+  app.footer("Run `recoil COMMAND --help` for a command's options and examples.");
+
+  cli::GlobalOptions global;
+  app.add_flag("-q,--quiet", global.quiet, "No progress bar or summary lines")->configurable(false);
+  app.add_flag("--log-json", global.log_json, "Machine-readable progress lines (JSON) on stderr");
+  cli::Action action;
+  cli::add_turntable_command(app, global, action);
+  cli::add_info_command(app, global, action);
+
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? 0 : static_cast<int>(ErrorKind::bad_input);
+  }
+  try {
+    return action ? action() : 0;
+  } catch (const Error& e) {
+    std::cerr << "recoil: error: " << e.what() << std::endl;
+    return e.exit_code();
+  } catch (const std::bad_alloc&) {
+    std::cerr << "recoil: error: out of memory" << std::endl;
+    return static_cast<int>(ErrorKind::internal);
+  } catch (const std::exception& e) {
+    std::cerr << "recoil: error: internal: " << e.what() << std::endl;
+    return static_cast<int>(ErrorKind::internal);
+  }
+}

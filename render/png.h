@@ -1,0 +1,26 @@
+#pragma once
+// PNG read/write through libpng (the only includer of png.h).
+#include <filesystem>
+
+#include "render/image.h"
+
+namespace recoil::render {
+
+struct PngOptions {
+  int level = 1;             // zlib level 0-9; 1 is fast and nearly as small for renders
+  bool fast_filter = true;   // SUB filter only: about 2x faster than adaptive, ~7 % larger
+};
+
+// Encodes `image` as 8-bit RGBA PNG into memory.
+std::vector<std::uint8_t> encode_png(const Image& image, const PngOptions& options = {});
+
+// Writes atomically: encodes to `path`.tmp-XXXX in the same folder, then
+// renames, so a reader never sees a half-written frame. Throws
+// recoil::Error(output_failed) naming the path when the disk refuses.
+void write_png(const std::filesystem::path& path, const Image& image, const PngOptions& options = {});
+
+// Reads any PNG (grey, palette, 16-bit, with or without alpha) as RGBA8.
+// Throws recoil::Error(bad_input) naming the file when it is not a PNG.
+Image read_png(const std::filesystem::path& path);
+
+}  // namespace recoil::render

@@ -1,0 +1,34 @@
+#!/usr/bin/env bash
+# The one list of system packages recoil needs (Debian 12 / Ubuntu 22.04+).
+# Installs only what is missing, through apt-get as root or via sudo.
+#   scripts/install-deps.sh          build + test dependencies
+#   scripts/install-deps.sh --video  also ffmpeg, for `recoil run --video`
+set -euo pipefail
+
+packages=(
+  build-essential cmake pkg-config
+  libeigen3-dev          # Eigen 3.4: all linear algebra
+  libembree-dev          # Embree 3: collision queries
+  libosmesa6-dev         # OSMesa: offscreen software OpenGL
+  libassimp-dev          # assimp 5: mesh import
+  libpng-dev             # PNG read/write
+  libcli11-dev           # command line
+  nlohmann-json3-dev     # scene files, stats
+  libgtest-dev           # tests
+  libbenchmark-dev       # make bench
+)
+if [[ "${1:-}" == "--video" ]]; then packages+=(ffmpeg); fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [[ ${#missing[@]} -eq 0 ]]; then exit 0; fi
+
+echo "install-deps: installing ${missing[*]}" >&2
+if [[ $(id -u) -eq 0 ]]; then sudo=(); elif command -v sudo >/dev/null; then sudo=(sudo); else
+  echo "install-deps: need root or sudo to install: ${missing[*]}" >&2; exit 1
+fi
+export DEBIAN_FRONTEND=noninteractive
+"${sudo[@]}" apt-get update -qq || true
+"${sudo[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,39 @@
+#pragma once
+// A tiny benchmark registry: each bench file registers named functions that
+// print their own table through BenchTable. `make bench` runs them all;
+// `recoil_bench NAME...` runs the ones whose name contains a filter.
+// Benchmarks report, they never assert: speed is not a test.
+#include <chrono>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace recoil::bench {
+
+using BenchFunction = std::function<void()>;
+
+// Registers at static-initialisation time: `static Register r("render", fn);`
+struct Register {
+  Register(const std::string& name, BenchFunction function);
+};
+
+// Wall-clock milliseconds of the fastest of `repeats` calls to `fn`.
+double best_ms(int repeats, const std::function<void()>& fn);
+
+// Prints an aligned text table: a title, a header row, then rows.
+class BenchTable {
+ public:
+  BenchTable(std::string title, std::vector<std::string> columns);
+  void add_row(std::vector<std::string> cells);
+  void print() const;
+
+ private:
+  std::string m_title;
+  std::vector<std::string> m_columns;
+  std::vector<std::vector<std::string>> m_rows;
+};
+
+// Formats a number with `digits` after the point.
+std::string fixed(double value, int digits = 1);
+
+}  // namespace recoil::bench

@@ -1,0 +1,60 @@
+#include "render/png.h"
+
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "core/error.h"
+#include "tests/test_support.h"
+
+namespace recoil::render {
+
+TEST(Png, RoundTripIsLosslessAtEveryLevel) {
+  Image image(37, 23);  // odd sizes catch stride mistakes
+  for (size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = static_cast<std::uint8_t>((i * 7919) % 251);
+  const auto dir = test::scratch_dir("png_round_trip");
+  for (int level : {0, 1, 6, 9}) {
+    for (bool fast : {true, false}) {
+      const auto path = dir / ("img_" + std::to_string(level) + (fast ? "f" : "a") + ".png");
+      write_png(path, image, PngOptions{level, fast});
+      const Image back = read_png(path);
+      ASSERT_EQ(back.width, image.width);
+      ASSERT_EQ(back.height, image.height);
+      EXPECT_EQ(back.rgba, image.rgba) << "level " << level;
+    }
+  }
+  // Atomic writes leave no temporary files behind.
+  int files = 0;
+  for ([[maybe_unused]] const auto& entry : std::filesystem::directory_iterator(dir)) ++files;
+  EXPECT_EQ(files, 8);
+}
+
+TEST(Png, RejectsNonPngAndTruncatedFiles) {
+  const auto dir = test::scratch_dir("png_bad");
+  std::ofstream(dir / "text.png") << "hello";
+  EXPECT_THROW(read_png(dir / "text.png"), Error);
+  Image image(16, 16);
+  const auto bytes = encode_png(image);
+  std::ofstream out(dir / "cut.png", std::ios::binary);
+  out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size() / 2));
+  out.close();
+  try {
+    read_png(dir / "cut.png");
+    FAIL() << "truncated PNG was accepted";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("cut.png"), std::string::npos);
+  }
+  EXPECT_THROW(read_png(dir / "missing.png"), Error);
+}
+
+TEST(Png, UnwritableFolderIsAnOutputError) {
+  try {
+    write_png("/nonexistent-folder/x.png", Image(2, 2));
+    FAIL();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::output_failed);
+  }
+}
+
+}  // namespace recoil::render
