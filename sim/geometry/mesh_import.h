@@ -1,0 +1,23 @@
+#pragma once
+// Surface import through assimp (mesh_import.cpp is the only includer of assimp).
+#include <filesystem>
+
+#include "sim/geometry/tri_mesh.h"
+
+namespace recoil::sim {
+
+// Reads any format assimp knows (OBJ, PLY, STL, glTF/GLB, Collada, FBX, ...):
+// every mesh of the file is placed under its node transforms and merged,
+// polygons are triangulated, points and lines dropped, vertices at the same
+// position welded (so a surface split by normals or UV seams is closed again)
+// and degenerate triangles dropped.
+// Throws recoil::Error(bad_input) naming the file when it cannot be read or
+// holds no triangles.
+TriMesh import_surface(const std::filesystem::path& path);
+
+// Welds vertices with bit-identical positions and drops triangles that then
+// repeat a vertex or have zero area; unused vertices are removed. Keeps the
+// first occurrence order, so the result is deterministic.
+TriMesh weld_and_clean(const TriMesh& mesh);
+
+}  // namespace recoil::sim
