@@ -7,7 +7,9 @@
 #include <Eigen/Geometry>
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <array>
 #include <map>
+#include <vector>
 #include <system_error>
 
 #include "core/error.h"
@@ -30,24 +32,29 @@ void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& pa
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     if (node.mMeshes[i] >= scene.mNumMeshes) continue;
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
-    if (!(mesh.mPrimitiveTypes & aiPrimitiveType_TRIANGLE) || !mesh.mVertices) continue;
+    if (!mesh.mVertices || !mesh.mFaces) continue;
     TriMesh part;
     part.vertices.resize(mesh.mNumVertices, 3);
     for (unsigned v = 0; v < mesh.mNumVertices; ++v) {
       const Eigen::Vector4d p(mesh.mVertices[v].x, mesh.mVertices[v].y, mesh.mVertices[v].z, 1.0);
       part.vertices.row(v) = (world * p).head<3>().transpose();
     }
-    int kept = 0;
-    part.triangles.resize(mesh.mNumFaces, 3);
+    // Polygons are split into fans here rather than by assimp's Triangulate
+    // step, which asserts (aborting the process) on some malformed files.
+    std::vector<std::array<int, 3>> fans;
     for (unsigned f = 0; f < mesh.mNumFaces; ++f) {
       const aiFace& face = mesh.mFaces[f];
-      if (face.mNumIndices != 3) continue;
+      if (face.mNumIndices < 3 || !face.mIndices) continue;
       bool in_range = true;
-      for (int k = 0; k < 3; ++k) in_range &= face.mIndices[k] < mesh.mNumVertices;
+      for (unsigned k = 0; k < face.mNumIndices; ++k) in_range &= face.mIndices[k] < mesh.mNumVertices;
       if (!in_range) continue;
-      for (int k = 0; k < 3; ++k) part.triangles(kept, k) = static_cast<int>(face.mIndices[k]);
-      ++kept;
+      for (unsigned k = 1; k + 1 < face.mNumIndices; ++k)
+        fans.push_back({static_cast<int>(face.mIndices[0]), static_cast<int>(face.mIndices[k]),
+                        static_cast<int>(face.mIndices[k + 1])});
     }
+    const int kept = static_cast<int>(fans.size());
+    part.triangles.resize(kept, 3);
+    for (int f = 0; f < kept; ++f) part.triangles.row(f) << fans[f][0], fans[f][1], fans[f][2];
     part.triangles.conservativeResize(kept, 3);
     if (world.topLeftCorner<3, 3>().determinant() < 0) part.triangles.col(1).swap(part.triangles.col(2));
     append(out, part);
@@ -97,11 +104,11 @@ TriMesh import_surface(const fs::path& path) {
   if (!fs::exists(path, ec)) throw bad_input(path.string() + ": no such file");
   if (fs::is_directory(path, ec)) throw bad_input(path.string() + ": is a folder, not a mesh file");
   Assimp::Importer importer;
-  // Ask assimp to drop points and lines; we weld positions ourselves, since
-  // assimp's own joining keeps vertices apart that differ in normal or UV.
-  importer.SetPropertyInteger(AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-  const aiScene* scene = importer.ReadFile(
-      path.string(), aiProcess_Triangulate | aiProcess_SortByPType | aiProcess_ValidateDataStructure);
+  // Only assimp's validation runs: its other post-processing steps assert
+  // (and abort) on some malformed files, so triangulation, dropping points and
+  // lines, and welding happen in collect() and weld_and_clean() instead
+  // (assimp's own joining also keeps vertices apart that differ in normal or UV).
+  const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
   if (!scene || !scene->mRootNode) {
     std::string reason = importer.GetErrorString();
     if (reason.empty()) reason = "not a mesh file assimp can read";
