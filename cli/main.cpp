@@ -11,6 +11,7 @@ int main(int argc, char** argv) {
   CLI::App app{"recoil: simulate elastic and rigid bodies colliding with friction, and render every frame to PNG."};
   app.set_version_flag("--version", std::string("recoil ") + RECOIL_VERSION + " (" + RECOIL_GIT + ")");
   app.require_subcommand(1);
+  app.fallthrough();  // global flags (-q, --log-json) may follow the subcommand
   app.footer("Run `recoil COMMAND --help` for a command's options and examples.");
 
   cli::GlobalOptions global;

@@ -16,6 +16,7 @@ packages=(
   nlohmann-json3-dev     # scene files, stats
   libgtest-dev           # tests
   libbenchmark-dev       # make bench
+  assimp-testmodels      # a corpus of real, valid and broken mesh files for the import tests
 )
 if [[ "${1:-}" == "--video" ]]; then packages+=(ffmpeg); fi
 

@@ -1,0 +1,15 @@
+#pragma once
+// Output folders: the default place for a run's products and their creation.
+#include <filesystem>
+#include <string>
+
+namespace recoil::cli {
+
+// output/<name>/ when the user gave no -o.
+std::filesystem::path default_output_dir(const std::string& name);
+
+// Creates `dir` (and parents); throws recoil::Error(output_failed) naming it
+// when that is impossible (a file in the way, no permission, disk full).
+void ensure_output_dir(const std::filesystem::path& dir);
+
+}  // namespace recoil::cli
