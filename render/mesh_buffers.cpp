@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/check.h"
+#include "render/mesh_topology.h"
 #include "render/vertex_normals.h"
 
 namespace recoil::render {
@@ -55,6 +56,7 @@ void MeshBuffers::upload(const RenderMesh& mesh) {
 
   if (indices_changed) {
     m_indices = mesh.indices;
+    m_closed = is_closed_oriented(m_indices);
     glBindVertexArray(m_vertex_array.get());
     glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m_indices.size() * sizeof(std::uint32_t)),
                  m_indices.data(), GL_STATIC_DRAW);

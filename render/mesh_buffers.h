@@ -21,6 +21,8 @@ class MeshBuffers {
   // Binds the vertex array and draws all triangles (indexed).
   void draw() const;
   std::size_t triangle_count() const { return m_indices.size() / 3; }
+  // Closed and consistently oriented (see mesh_topology.h): back faces may be culled.
+  bool closed() const { return m_closed; }
 
  private:
   gl::VertexArray m_vertex_array;
@@ -31,6 +33,7 @@ class MeshBuffers {
   std::size_t m_vertex_floats = 0;    // floats of the last upload
   std::vector<std::uint32_t> m_indices;  // what m_elements holds
   std::vector<float> m_normal_data;      // scratch, reused every frame
+  bool m_closed = false;
 };
 
 }  // namespace recoil::render

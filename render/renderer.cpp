@@ -74,6 +74,14 @@ void set(ShaderProgram& p, const char* name, const Eigen::Matrix4f& m) {
 void set(ShaderProgram& p, const char* name, float v) { glUniform1f(p.location(name), v); }
 void set(ShaderProgram& p, const char* name, int v) { glUniform1i(p.location(name), v); }
 
+void set_culling(bool cull) {
+  if (cull) {
+    glEnable(GL_CULL_FACE);
+  } else {
+    glDisable(GL_CULL_FACE);
+  }
+}
+
 }  // namespace
 
 struct Renderer::Impl {
@@ -198,9 +206,14 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
     glPolygonOffset(2.0f, 2.0f);
     depth_program.use();
     set(depth_program, "u_view_projection", light_clip);
+    glCullFace(GL_BACK);
     for (size_t i = 0; i < meshes.size(); ++i) {
-      if (scene.meshes[i].opacity > 0.0f) meshes[i].draw();
+      if (scene.meshes[i].opacity <= 0.0f) continue;
+      // A closed mesh's faces turned from the light are hidden by its lit side.
+      set_culling(meshes[i].closed());
+      meshes[i].draw();
     }
+    set_culling(false);
     glDisable(GL_POLYGON_OFFSET_FILL);
   }
 
@@ -246,11 +259,15 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
     set(wire_program, "u_view_projection", view_projection);
   }
 
-  // Opaque meshes first, with no blending.
+  // Opaque meshes first, with no blending; closed ones without their back
+  // faces, which llvmpipe would otherwise set up and depth-test for nothing.
+  glCullFace(GL_BACK);
   for (size_t i = 0; i < meshes.size(); ++i) {
-    if (scene.meshes[i].opacity >= kOpaque) draw_mesh(i);
+    if (scene.meshes[i].opacity < kOpaque) continue;
+    set_culling(meshes[i].closed());
+    draw_mesh(i);
   }
-
+  set_culling(false);
   // The floor, its rim fading into the background colour. It is drawn after
   // the opaque meshes so that early depth testing skips the pixels they cover;
   // it does not blend, so anything below the floor stays hidden even where
