@@ -1,6 +1,7 @@
 #pragma once
 // Image: 8-bit RGBA pixels, row-major, top row first (the order PNG stores).
 // Colour values are sRGB-encoded, alpha is straight (not premultiplied).
+#include <cstddef>
 #include <cstdint>
 #include <vector>
 

@@ -1,0 +1,73 @@
+#include "render/mesh_buffers.h"
+
+#include <algorithm>
+
+#include "core/check.h"
+#include "render/mesh_topology.h"
+#include "render/vertex_normals.h"
+
+namespace recoil::render {
+
+MeshBuffers::MeshBuffers()
+    : m_vertex_array(gl::VertexArray::create()),
+      m_positions(gl::Buffer::create()),
+      m_normals(gl::Buffer::create()),
+      m_elements(gl::Buffer::create()) {
+  glBindVertexArray(m_vertex_array.get());
+  glBindBuffer(GL_ARRAY_BUFFER, m_positions.get());
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ARRAY_BUFFER, m_normals.get());
+  glEnableVertexAttribArray(1);
+  glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_elements.get());
+  glBindVertexArray(0);
+}
+
+void MeshBuffers::upload(const RenderMesh& mesh) {
+  RECOIL_CHECK(mesh.positions.size() % 3 == 0, "positions.size()=" << mesh.positions.size());
+  RECOIL_CHECK(mesh.indices.size() % 3 == 0, "indices.size()=" << mesh.indices.size());
+  const std::size_t floats = mesh.positions.size();
+  const bool indices_changed =
+      !std::equal(mesh.indices.begin(), mesh.indices.end(), m_indices.begin(), m_indices.end());
+  if (indices_changed || floats != m_vertex_floats) {
+    const std::uint32_t vertex_count = static_cast<std::uint32_t>(floats / 3);
+    const auto worst = std::max_element(mesh.indices.begin(), mesh.indices.end());
+    RECOIL_CHECK(worst == mesh.indices.end() || *worst < vertex_count,
+                 "index " << *worst << " >= vertex count " << vertex_count);
+  }
+  area_weighted_normals(mesh.positions, mesh.indices, m_normal_data);
+
+  const auto bytes = static_cast<GLsizeiptr>(floats * sizeof(float));
+  if (floats > m_vertex_capacity) {
+    // Grow (never shrink) so a mesh that changes size does not reallocate each frame.
+    glBindBuffer(GL_ARRAY_BUFFER, m_positions.get());
+    glBufferData(GL_ARRAY_BUFFER, bytes, mesh.positions.data(), GL_STREAM_DRAW);
+    glBindBuffer(GL_ARRAY_BUFFER, m_normals.get());
+    glBufferData(GL_ARRAY_BUFFER, bytes, m_normal_data.data(), GL_STREAM_DRAW);
+    m_vertex_capacity = floats;
+  } else {
+    glBindBuffer(GL_ARRAY_BUFFER, m_positions.get());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, mesh.positions.data());
+    glBindBuffer(GL_ARRAY_BUFFER, m_normals.get());
+    glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, m_normal_data.data());
+  }
+  m_vertex_floats = floats;
+
+  if (indices_changed) {
+    m_indices = mesh.indices;
+    m_closed = is_closed_oriented(m_indices);
+    glBindVertexArray(m_vertex_array.get());
+    glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m_indices.size() * sizeof(std::uint32_t)),
+                 m_indices.data(), GL_STATIC_DRAW);
+    glBindVertexArray(0);
+  }
+}
+
+void MeshBuffers::draw() const {
+  if (m_indices.empty()) return;
+  glBindVertexArray(m_vertex_array.get());
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m_indices.size()), GL_UNSIGNED_INT, nullptr);
+}
+
+}  // namespace recoil::render

@@ -1,0 +1,94 @@
+#include "render/render_target.h"
+
+#include <algorithm>
+#include <string>
+
+#include "core/error.h"
+
+namespace recoil::render {
+namespace {
+
+void check_complete(const char* what) {
+  const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+  if (status != GL_FRAMEBUFFER_COMPLETE) {
+    throw Error(ErrorKind::internal, std::string("the OpenGL driver refused the ") + what +
+                                         " framebuffer (status " + std::to_string(status) + ")");
+  }
+}
+
+void storage(GLuint renderbuffer, int samples, GLenum format, int width, int height) {
+  glBindRenderbuffer(GL_RENDERBUFFER, renderbuffer);
+  if (samples > 0) {
+    glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, format, width, height);
+  } else {
+    glRenderbufferStorage(GL_RENDERBUFFER, format, width, height);
+  }
+}
+
+}  // namespace
+
+RenderTarget::RenderTarget(int width, int height, int msaa)
+    : m_width(width),
+      m_height(height),
+      m_msaa(msaa),
+      m_draw_color(gl::Renderbuffer::create()),
+      m_draw_depth(gl::Renderbuffer::create()),
+      m_draw(gl::Framebuffer::create()) {
+  GLint max_size = 0, max_samples = 0;
+  glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+  glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  if (width > max_size || height > max_size) {
+    throw bad_input("render resolution " + std::to_string(width) + "x" + std::to_string(height) +
+                    " exceeds the OpenGL driver's limit of " + std::to_string(max_size));
+  }
+  if (msaa > max_samples) {
+    throw bad_input("render msaa " + std::to_string(msaa) + " exceeds the OpenGL driver's limit of " +
+                    std::to_string(max_samples) + " samples");
+  }
+  storage(m_draw_color.get(), msaa, GL_SRGB8_ALPHA8, width, height);
+  storage(m_draw_depth.get(), msaa, GL_DEPTH_COMPONENT24, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, m_draw.get());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_draw_color.get());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_draw_depth.get());
+  check_complete("multisampled colour and depth");
+  if (msaa > 0) {
+    m_resolve_color = gl::Renderbuffer::create();
+    m_resolve = gl::Framebuffer::create();
+    storage(m_resolve_color.get(), 0, GL_SRGB8_ALPHA8, width, height);
+    glBindFramebuffer(GL_FRAMEBUFFER, m_resolve.get());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_resolve_color.get());
+    check_complete("resolve");
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, 0);
+}
+
+void RenderTarget::bind_for_drawing() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, m_draw.get());
+  glViewport(0, 0, m_width, m_height);
+}
+
+void RenderTarget::read(Image& image) {
+  if (m_msaa > 0) {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_draw.get());
+    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_resolve.get());
+    // With GL_FRAMEBUFFER_SRGB on (as the renderer leaves it), the samples are
+    // averaged as linear values, so edges do not darken.
+    glBlitFramebuffer(0, 0, m_width, m_height, 0, 0, m_width, m_height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_resolve.get());
+  } else {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_draw.get());
+  }
+  if (image.width != m_width || image.height != m_height) image = Image(m_width, m_height);
+  glPixelStorei(GL_PACK_ALIGNMENT, 4);
+  glReadPixels(0, 0, m_width, m_height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
+  // GL's rows run bottom-up; Image (and PNG) want the top row first.
+  const std::size_t row = static_cast<std::size_t>(m_width) * 4;
+  for (int y = 0; y < m_height / 2; ++y) {
+    std::swap_ranges(image.rgba.begin() + static_cast<std::ptrdiff_t>(y * row),
+                     image.rgba.begin() + static_cast<std::ptrdiff_t>((y + 1) * row),
+                     image.rgba.begin() + static_cast<std::ptrdiff_t>((m_height - 1 - y) * row));
+  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+}
+
+}  // namespace recoil::render

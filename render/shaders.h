@@ -1,0 +1,23 @@
+#pragma once
+// GLSL 3.30 sources of the renderer's programs. Lighting happens in linear
+// space; the sRGB framebuffer encodes on write. Fragment outputs are
+// premultiplied by alpha (blend ONE, ONE_MINUS_SRC_ALPHA) so that a
+// transparent background can be un-premultiplied exactly at the end.
+#include <string>
+
+namespace recoil::render::shaders {
+
+// Meshes: position (location 0) and normal (location 1), studio lighting;
+// `shadows` compiles the key light's shadow-map lookups in.
+std::string mesh_vertex();
+std::string mesh_fragment(bool shadows);
+// The ground plane: lit like a matte mesh plus the grid and the distance fade.
+std::string ground_vertex();
+std::string ground_fragment(bool shadows, bool grid);
+// Depth only, from the key light (shadow map) — position attribute only.
+std::string depth_vertex();
+std::string depth_fragment();
+// Flat colour, for the wireframe overlay.
+std::string flat_fragment();
+
+}  // namespace recoil::render::shaders

@@ -1,0 +1,235 @@
+// Behaviour of the offscreen renderer on tiny frames: coverage, clear colour,
+// determinism, transparency, MSAA, blending order, wireframe, bad settings.
+#include "render/renderer.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <iostream>
+
+#include "core/error.h"
+#include "tests/render/test_meshes.h"
+
+namespace recoil::render {
+namespace {
+
+// One triangle facing the camera (+z), big enough to cover the centre.
+RenderMesh facing_triangle(Rgb color, float z = 0.0f) {
+  RenderMesh mesh;
+  mesh.positions = {-0.6f, -0.5f, z, 0.6f, -0.5f, z, 0.0f, 0.6f, z};
+  mesh.indices = {0, 1, 2};
+  mesh.color = color;
+  return mesh;
+}
+
+Camera front_camera() {
+  Camera camera;
+  camera.eye = {0.0, 0.0, 3.0};
+  camera.target = {0.0, 0.0, 0.0};
+  camera.fov_y_degrees = 40.0;
+  return camera;
+}
+
+RenderSettings small(int msaa, bool shadows = false) {
+  RenderSettings settings;
+  settings.width = 96;
+  settings.height = 64;
+  settings.msaa = msaa;
+  settings.shadows = shadows;
+  return settings;
+}
+
+// Box, sphere and a transparent torus on the grid floor: every feature at once.
+RenderScene studio_scene() {
+  RenderScene scene;
+  scene.meshes.push_back(test::make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.85f, 0.63f, 0.40f}));
+  scene.meshes.push_back(test::make_icosphere({1.1f, 0.4f, 0.4f}, 0.4f, 2, {0.30f, 0.50f, 0.85f}));
+  RenderMesh torus = test::make_torus({-1.0f, 0.15f, 0.6f}, 0.4f, 0.15f, 32, 12, {0.8f, 0.2f, 0.2f});
+  torus.opacity = 0.5f;
+  scene.meshes.push_back(torus);
+  return scene;
+}
+
+Camera studio_camera(const RenderSettings& s) {
+  return frame_bounding_sphere({0.0, 0.5, 0.0}, 1.6, 30.0, 20.0, 40.0, double(s.width) / s.height);
+}
+
+std::array<int, 4> at(const Image& image, int x, int y) {
+  const std::uint8_t* p = image.pixel(x, y);
+  return {p[0], p[1], p[2], p[3]};
+}
+
+TEST(Renderer, TriangleCoversCentreWithItsColourAndClearColourElsewhere) {
+  const RenderSettings settings = small(0);
+  Renderer renderer(settings);
+  RenderScene scene;
+  scene.ground = false;
+  for (int channel = 0; channel < 3; ++channel) {
+    Rgb color = {0.1f, 0.1f, 0.1f};
+    color[static_cast<size_t>(channel)] = 0.9f;
+    scene.meshes = {facing_triangle(color)};
+    const Image image = renderer.render(scene, front_camera());
+    ASSERT_EQ(image.width, 96);
+    ASSERT_EQ(image.height, 64);
+    const auto centre = at(image, 48, 32);
+    std::cout << "channel " << channel << " centre rgba " << centre[0] << " " << centre[1] << " " << centre[2]
+              << " " << centre[3] << "\n";
+    // Lit by the rig, the triangle keeps its hue: the chosen channel dominates.
+    for (int other = 0; other < 3; ++other) {
+      if (other != channel) {
+        EXPECT_GT(centre[static_cast<size_t>(channel)], 2 * centre[static_cast<size_t>(other)] + 20);
+      }
+    }
+    EXPECT_EQ(centre[3], 255);
+    // Corners hold the clear colour #1d2127 exactly.
+    for (auto [x, y] : {std::pair{0, 0}, std::pair{95, 0}, std::pair{0, 63}, std::pair{95, 63}}) {
+      EXPECT_EQ(at(image, x, y), (std::array<int, 4>{0x1d, 0x21, 0x27, 255})) << x << "," << y;
+    }
+  }
+}
+
+TEST(Renderer, ImageIsTopRowFirst) {
+  // A triangle in the upper half of the view lands in the image's first rows.
+  Renderer renderer(small(0));
+  RenderScene scene;
+  scene.ground = false;
+  RenderMesh mesh;
+  mesh.positions = {-0.5f, 0.2f, 0.0f, 0.5f, 0.2f, 0.0f, 0.0f, 0.9f, 0.0f};
+  mesh.indices = {0, 1, 2};
+  mesh.color = {0.9f, 0.9f, 0.9f};
+  scene.meshes = {mesh};
+  const Image image = renderer.render(scene, front_camera());
+  EXPECT_GT(at(image, 48, 16)[0], 100);  // upper half: triangle
+  EXPECT_EQ(at(image, 48, 48)[0], 0x1d);  // lower half: background
+}
+
+TEST(Renderer, SameInputGivesIdenticalBytes) {
+  const RenderSettings settings = small(4, true);
+  const RenderScene scene = studio_scene();
+  Renderer renderer(settings);
+  const Image first = renderer.render(scene, studio_camera(settings));
+  const Image second = renderer.render(scene, studio_camera(settings));
+  Renderer fresh(settings);
+  const Image third = fresh.render(scene, studio_camera(settings));
+  EXPECT_EQ(first.rgba, second.rgba);
+  EXPECT_EQ(first.rgba, third.rgba);
+}
+
+TEST(Renderer, TransparentBackgroundHasZeroAlphaWhereNothingIsDrawn) {
+  RenderSettings settings = small(4, true);
+  settings.transparent_background = true;
+  Renderer renderer(settings);
+  const Image image = renderer.render(studio_scene(), studio_camera(settings));
+  EXPECT_EQ(at(image, 0, 0)[3], 0);    // sky above the faded floor
+  EXPECT_EQ(at(image, 95, 0)[3], 0);
+  EXPECT_EQ(at(image, 48, 32)[3], 255);  // the box
+  // The floor's rim fades: some pixels are partly transparent.
+  int fading = 0;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x) fading += (at(image, x, y)[3] > 0 && at(image, x, y)[3] < 255);
+  std::cout << "partly transparent pixels: " << fading << "\n";
+  EXPECT_GT(fading, 20);
+}
+
+TEST(Renderer, EveryMsaaLevelRendersAndSmoothsEdges) {
+  RenderScene scene;
+  scene.ground = false;
+  scene.meshes = {facing_triangle({0.9f, 0.9f, 0.9f})};
+  std::vector<int> mixed_counts;
+  for (int msaa : {0, 2, 4}) {
+    Renderer renderer(small(msaa));
+    const Image image = renderer.render(scene, front_camera());
+    const int inside = at(image, 48, 32)[1];
+    EXPECT_GT(inside, 150) << "msaa " << msaa;
+    // Pixels strictly between background and triangle: antialiased edge pixels.
+    int mixed = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const int g = at(image, x, y)[1];
+        mixed += (g > 0x21 + 8 && g < inside - 8);
+      }
+    std::cout << "msaa " << msaa << ": centre green " << inside << ", edge pixels " << mixed << "\n";
+    mixed_counts.push_back(mixed);
+  }
+  EXPECT_LT(mixed_counts[0], 5);
+  EXPECT_GT(mixed_counts[1], 30);
+  EXPECT_GT(mixed_counts[2], mixed_counts[1] / 2);
+}
+
+TEST(Renderer, TransparentRedInFrontOfOpaqueBlueLooksPurpleInAnyListOrder) {
+  RenderMesh blue = facing_triangle({0.1f, 0.2f, 0.9f}, -0.3f);
+  RenderMesh red = facing_triangle({0.9f, 0.1f, 0.1f}, 0.3f);
+  red.opacity = 0.5f;
+  RenderScene scene;
+  scene.ground = false;
+  Renderer renderer(small(0));
+  scene.meshes = {blue, red};
+  const auto first = at(renderer.render(scene, front_camera()), 48, 32);
+  scene.meshes = {red, blue};
+  const auto second = at(renderer.render(scene, front_camera()), 48, 32);
+  std::cout << "blended centre " << first[0] << " " << first[1] << " " << first[2] << "\n";
+  EXPECT_EQ(first, second);
+  EXPECT_GT(first[0], first[1] + 40);  // red shows
+  EXPECT_GT(first[2], first[1] + 40);  // blue shows through
+  EXPECT_EQ(first[3], 255);
+  // Opaque red would hide the blue.
+  red.opacity = 1.0f;
+  scene.meshes = {blue, red};
+  const auto opaque = at(renderer.render(scene, front_camera()), 48, 32);
+  EXPECT_LT(opaque[2], first[2] - 40);
+}
+
+TEST(Renderer, WireframeDrawsDarkEdgesOverTheShading) {
+  RenderSettings settings = small(0);
+  RenderScene scene;
+  scene.ground = false;
+  scene.meshes = {test::make_icosphere({0, 0, 0}, 0.9f, 1, {0.9f, 0.9f, 0.9f})};
+  const Image shaded = Renderer(settings).render(scene, front_camera());
+  settings.wireframe = true;
+  const Image wire = Renderer(settings).render(scene, front_camera());
+  int darker = 0;
+  for (size_t i = 0; i < shaded.rgba.size(); i += 4) darker += wire.rgba[i + 1] + 40 < shaded.rgba[i + 1];
+  std::cout << "pixels darkened by edges: " << darker << "\n";
+  EXPECT_GT(darker, 50);
+}
+
+TEST(Renderer, MeshesMayChangeBetweenFrames) {
+  // Slots are reused: a frame with fewer meshes or a changed topology must
+  // not draw stale data.
+  Renderer renderer(small(0));
+  RenderScene scene;
+  scene.ground = false;
+  scene.meshes = {facing_triangle({0.9f, 0.1f, 0.1f}), test::make_box({0, 0, 0}, {0.2f, 0.2f, 0.2f}, {0.1f, 0.9f, 0.1f})};
+  renderer.render(scene, front_camera());
+  scene.meshes = {test::make_box({0, 0, 0}, {2.0f, 2.0f, 0.2f}, {0.1f, 0.9f, 0.1f})};
+  const Image after = renderer.render(scene, front_camera());
+  const auto centre = at(after, 48, 32);
+  EXPECT_GT(centre[1], 2 * centre[0]);
+  const Image fresh = Renderer(small(0)).render(scene, front_camera());
+  EXPECT_EQ(after.rgba, fresh.rgba);
+}
+
+TEST(Renderer, EmptySceneIsBackgroundAndFloor) {
+  const RenderSettings settings = small(2, true);
+  Renderer renderer(settings);
+  RenderScene scene;
+  const Image image = renderer.render(scene, studio_camera(settings));
+  EXPECT_EQ(at(image, 0, 0), (std::array<int, 4>{0x1d, 0x21, 0x27, 255}));
+}
+
+TEST(Renderer, RejectsBadSettings) {
+  RenderSettings settings = small(3);
+  EXPECT_THROW(Renderer{settings}, Error);
+  settings = small(0);
+  settings.width = 0;
+  try {
+    Renderer renderer(settings);
+    FAIL() << "no throw";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::bad_input);
+    EXPECT_NE(std::string(e.what()).find("resolution"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace recoil::render
