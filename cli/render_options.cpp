@@ -1,0 +1,69 @@
+#include "cli/render_options.h"
+
+#include <cstdio>
+
+#include "core/error.h"
+
+namespace recoil::cli {
+
+void add_render_options(CLI::App& command, RenderOptions& options) {
+  const std::string group = "Rendering";
+  command.add_option("--resolution", options.resolution, "Frame size WxH in pixels")
+      ->group(group)->capture_default_str();
+  command.add_option("--fps", options.fps, "Frames per second of the output")->group(group)->capture_default_str();
+  command.add_option("--msaa", options.msaa, "Anti-aliasing samples per pixel: 0, 2 or 4")
+      ->check(CLI::IsMember({0, 2, 4}))->group(group)->capture_default_str();
+  command.add_flag("--no-shadows", options.no_shadows, "Skip the key light's shadow (faster)")->group(group);
+  command.add_option("--background", options.background, "Background #rrggbb, or 'transparent' for alpha 0")
+      ->group(group)->capture_default_str();
+  command.add_flag("--wireframe", options.wireframe, "Draw triangle edges over the shading")->group(group);
+  command.add_option("--color", options.color, "Colour of the bodies, #rrggbb (default: a palette)")->group(group);
+  command.add_option("--camera-distance", options.camera_distance,
+                     "Camera distance from its target in metres (default: fit the scene)")
+      ->check(CLI::NonNegativeNumber)->group(group);
+  command.add_option("--png-level", options.png_level, "PNG compression 0 (fastest) to 9 (smallest)")
+      ->check(CLI::Range(0, 9))->group(group)->capture_default_str();
+}
+
+render::Rgb parse_color(const std::string& text, const std::string& what) {
+  const std::string hex = !text.empty() && text[0] == '#' ? text.substr(1) : text;
+  unsigned r = 0, g = 0, b = 0;
+  int consumed = 0;
+  if (hex.size() != 6 || std::sscanf(hex.c_str(), "%2x%2x%2x%n", &r, &g, &b, &consumed) != 3 || consumed != 6)
+    throw bad_input(what + ": expected a colour #rrggbb, got '" + text + "'");
+  return {r / 255.0f, g / 255.0f, b / 255.0f};
+}
+
+render::RenderSettings to_render_settings(const RenderOptions& options) {
+  render::RenderSettings settings;
+  int width = 0, height = 0, consumed = 0;
+  if (std::sscanf(options.resolution.c_str(), "%dx%d%n", &width, &height, &consumed) != 2 ||
+      consumed != static_cast<int>(options.resolution.size()) || width < 16 || height < 16 || width > 16384 ||
+      height > 16384)
+    throw bad_input("--resolution: expected WxH between 16x16 and 16384x16384, got '" + options.resolution + "'");
+  settings.width = width;
+  settings.height = height;
+  settings.msaa = options.msaa;
+  settings.shadows = !options.no_shadows;
+  settings.wireframe = options.wireframe;
+  if (options.background == "transparent") settings.transparent_background = true;
+  else settings.background = parse_color(options.background, "--background");
+  if (!(options.fps > 0 && options.fps <= 1000)) throw bad_input("--fps: must be in (0, 1000]");
+  return settings;
+}
+
+render::PngOptions to_png_options(const RenderOptions& options) {
+  render::PngOptions png;
+  png.level = options.png_level;
+  return png;
+}
+
+render::Rgb palette_color(int index) {
+  // Warm clay first (the hero body), then muted, well-separated hues.
+  static const render::Rgb palette[] = {{0.851f, 0.627f, 0.400f}, {0.376f, 0.620f, 0.780f}, {0.569f, 0.737f, 0.459f},
+                                        {0.831f, 0.459f, 0.471f}, {0.651f, 0.561f, 0.788f}, {0.886f, 0.776f, 0.408f},
+                                        {0.412f, 0.733f, 0.706f}, {0.780f, 0.600f, 0.722f}};
+  return palette[index % (sizeof(palette) / sizeof(palette[0]))];
+}
+
+}  // namespace recoil::cli

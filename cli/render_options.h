@@ -1,0 +1,40 @@
+#pragma once
+// The render options shared by `run`, `drop` and `turntable` (SPEC.md section 2),
+// parsed from the command line into render::RenderSettings.
+#include <CLI/CLI.hpp>
+#include <optional>
+#include <string>
+
+#include "render/png.h"
+#include "render/renderer.h"
+
+namespace recoil::cli {
+
+struct RenderOptions {
+  std::string resolution = "1280x720";  // WxH
+  double fps = 30.0;
+  int msaa = 4;
+  bool no_shadows = false;
+  std::string background = "#1d2127";   // #rrggbb or "transparent"
+  bool wireframe = false;
+  std::string color;                    // #rrggbb, empty: the default palette
+  double camera_distance = 0.0;         // metres from the target; 0: fit the scene
+  int png_level = 1;
+};
+
+// Adds --resolution, --fps, --msaa, --no-shadows, --background, --wireframe,
+// --color, --camera-distance, --png-level to `command`, in a "Rendering" group.
+void add_render_options(CLI::App& command, RenderOptions& options);
+
+// Validated settings; throws recoil::Error(bad_input) naming the option.
+render::RenderSettings to_render_settings(const RenderOptions& options);
+render::PngOptions to_png_options(const RenderOptions& options);
+
+// "#rrggbb" (or "rrggbb") as sRGB components in [0, 1]; throws bad_input
+// naming `what` (the option or field) for anything else.
+render::Rgb parse_color(const std::string& text, const std::string& what);
+
+// The colour of the i-th body when none is given: a soft, distinguishable palette.
+render::Rgb palette_color(int index);
+
+}  // namespace recoil::cli
