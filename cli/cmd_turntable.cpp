@@ -1,20 +1,12 @@
-// `recoil turntable MESH`: the camera orbits once around a mesh standing on the
-// ground, one PNG per frame. Rendering of frame i+1 overlaps the PNG encoding
-// of frame i (render::FrameWriter).
-#include <algorithm>
+// `recoil turntable MESH`: options and reporting; the frame loop is in
+// cli/turntable.cpp.
 #include <iostream>
-#include <thread>
 
 #include "cli/commands.h"
-#include "cli/frame_names.h"
 #include "cli/output_dir.h"
 #include "cli/progress.h"
-#include "cli/render_bridge.h"
 #include "cli/render_options.h"
-#include "core/error.h"
-#include "render/camera.h"
-#include "render/frame_writer.h"
-#include "render/renderer.h"
+#include "cli/turntable.h"
 #include "sim/geometry/mesh_import.h"
 
 namespace recoil::cli {
@@ -29,48 +21,22 @@ struct TurntableOptions {
 };
 
 int run_turntable(const TurntableOptions& options, const GlobalOptions& global) {
-  const render::RenderSettings settings = to_render_settings(options.render);
-  const render::Rgb color =
-      options.render.color.empty() ? palette_color(0) : parse_color(options.render.color, "--color");
+  TurntableJob job;
+  job.settings = to_render_settings(options.render);
+  job.png = to_png_options(options.render);
+  job.color = options.render.color.empty() ? palette_color(0) : parse_color(options.render.color, "--color");
+  job.frames = options.frames;
+  job.elevation_deg = options.elevation;
+  job.camera_distance = options.render.camera_distance;
+  job.output_dir = options.output.empty()
+                       ? default_output_dir(std::filesystem::path(options.mesh).stem().string())
+                       : std::filesystem::path(options.output);
   sim::TriMesh mesh = sim::import_surface(options.mesh);
-
-  // Stand the mesh on the ground (y = 0), centred on the vertical axis.
-  const sim::Aabb box = sim::bounding_box(mesh);
-  const Eigen::Vector3d lift(-box.center().x(), -box.min.y(), -box.center().z());
-  sim::transform_in_place(mesh, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Ones(), lift);
-  const sim::Aabb placed = sim::bounding_box(mesh);
-  const Eigen::Vector3d center = placed.center();
-  const double radius = std::max(0.5 * placed.extent().norm(), 1e-6);
-
-  render::RenderScene scene;
-  scene.meshes.push_back(to_render_mesh(mesh, color));
-  scene.ground = true;
-  scene.ground_height = 0.0f;
-
-  const std::filesystem::path dir =
-      options.output.empty() ? default_output_dir(std::filesystem::path(options.mesh).stem().string())
-                             : std::filesystem::path(options.output);
-  ensure_output_dir(dir);
-
-  render::Renderer renderer(settings);
-  const double aspect = static_cast<double>(settings.width) / settings.height;
-  const int encoders = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
-  render::FrameWriter writer(to_png_options(options.render), encoders, 2 * encoders + 1);
+  ensure_output_dir(job.output_dir);
   Progress progress(global, "turntable", options.frames);
-  render::Image image;
-  for (int frame = 0; frame < options.frames; ++frame) {
-    const double azimuth = render::orbit_azimuth_deg(frame, options.frames);
-    render::Camera camera =
-        render::frame_bounding_sphere(center, radius, azimuth, options.elevation, 40.0, aspect);
-    if (options.render.camera_distance > 0)
-      camera.eye = camera.target + options.render.camera_distance * (camera.eye - camera.target).normalized();
-    renderer.render(scene, camera, image);
-    writer.submit(dir / frame_file_name(frame + 1, options.frames), image);
-    progress.update(frame + 1);
-  }
-  writer.finish();
+  render_turntable(std::move(mesh), job, [&](int done) { progress.update(done); });
   progress.finish();
-  if (!global.quiet) std::cerr << "recoil: wrote " << options.frames << " frames to " << dir.string() << "\n";
+  if (!global.quiet) std::cerr << "recoil: wrote " << options.frames << " frames to " << job.output_dir.string() << "\n";
   return 0;
 }
 
