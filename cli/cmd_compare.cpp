@@ -1,0 +1,205 @@
+// `recoil compare ACTUAL REF`: visual regression of frames against references
+// (SPEC.md section 6). Exit 0 within tolerance, 1 beyond it, 2 bad input.
+#include <algorithm>
+#include <atomic>
+#include <cstdio>
+#include <exception>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <system_error>
+#include <thread>
+
+#include "cli/commands.h"
+#include "cli/compare_io.h"
+#include "cli/compare_pairs.h"
+#include "cli/compare_report.h"
+#include "core/error.h"
+#include "render/diff_heatmap.h"
+#include "render/png.h"
+
+namespace recoil::cli {
+namespace fs = std::filesystem;
+namespace {
+
+struct CompareOptions {
+  std::string actual;
+  std::string reference;
+  double threshold = render::default_compare_threshold;
+  double max_failing = 0.001;
+  std::string diff_dir;
+  std::string report;
+  bool json = false;
+  bool update = false;
+};
+
+// Compares every planned pair, several at once; each result lands at its own
+// index, so output does not depend on scheduling. The first error by pair
+// index is rethrown, so which error is reported does not either.
+std::vector<PairResult> compare_all(const PairPlan& plan, const CompareOptions& options) {
+  const size_t n = plan.actual.size();
+  std::vector<PairResult> results(n);
+  std::vector<std::exception_ptr> errors(n);
+  std::atomic<size_t> next{0};
+  const fs::path diff_dir = options.diff_dir;
+  auto worker = [&] {
+    for (size_t i = next++; i < n; i = next++) {
+      try {
+        PairResult& r = results[i];
+        r.actual = plan.actual[i];
+        r.reference = plan.reference[i];
+        const render::LoadedComparison loaded =
+            render::compare_image_files(r.actual, r.reference, options.threshold);
+        r.metrics = loaded.metrics;
+        r.pass = r.metrics.failing_fraction <= options.max_failing;
+        if (options.diff_dir.empty() && options.report.empty()) continue;
+        const render::Image heat = render::difference_heatmap(loaded.actual, loaded.reference, options.threshold);
+        if (!options.diff_dir.empty()) render::write_png(diff_dir / r.actual.filename(), heat);
+        if (!options.report.empty()) r.diff_png = render::encode_png(heat);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  const size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, std::min<size_t>(n, 16));
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return results;
+}
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+void print_table(const std::vector<PairResult>& results, const PairPlan& plan, const CompareOptions& options,
+                 bool pass) {
+  std::printf("%-7s %10s %9s %8s %8s  %s\n", "status", "failing", "max diff", "PSNR dB", "SSIM", "frame");
+  for (const PairResult& r : results) {
+    const render::ImageComparison& m = r.metrics;
+    std::printf("%-7s %9.4f%% %9.4f %8s %8.5f  %s\n", r.pass ? "pass" : "FAIL", m.failing_fraction * 100.0,
+                m.max_difference, m.psnr ? format("%.2f", *m.psnr).c_str() : "inf", m.ssim,
+                pair_label(r, plan.directory_mode).c_str());
+  }
+  for (const fs::path& p : plan.missing) std::printf("%-7s %48s  %s\n", "MISSING", "", p.filename().c_str());
+  for (const fs::path& p : plan.extra) std::printf("%-7s %48s  %s\n", "extra", "", p.filename().c_str());
+  const size_t failing = static_cast<size_t>(std::count_if(results.begin(), results.end(),
+                                                           [](const PairResult& r) { return !r.pass; }));
+  std::printf("%s: %zu of %zu pair(s) beyond tolerance, %zu missing, %zu extra (threshold %g, max failing %g)\n",
+              pass ? "PASS" : "FAIL", failing, results.size(), plan.missing.size(), plan.extra.size(),
+              options.threshold, options.max_failing);
+}
+
+nlohmann::ordered_json to_json(const std::vector<PairResult>& results, const PairPlan& plan, bool pass) {
+  nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
+  for (const PairResult& r : results) {
+    const render::ImageComparison& m = r.metrics;
+    pairs.push_back({{"actual", r.actual.string()},
+                     {"reference", r.reference.string()},
+                     {"pass", r.pass},
+                     {"failing_fraction", m.failing_fraction},
+                     {"max_difference", m.max_difference},
+                     {"psnr", m.psnr ? nlohmann::ordered_json(*m.psnr) : nlohmann::ordered_json(nullptr)},
+                     {"ssim", m.ssim}});
+  }
+  auto paths = [](const std::vector<fs::path>& list) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const fs::path& p : list) out.push_back(p.string());
+    return out;
+  };
+  return {{"pass", pass}, {"pairs", pairs}, {"missing", paths(plan.missing)}, {"extra", paths(plan.extra)}};
+}
+
+// --diff must not be a folder of the inputs: heat maps are named like the
+// frames and would overwrite them.
+void check_diff_dir(const CompareOptions& options, const PairPlan& plan) {
+  if (options.diff_dir.empty()) return;
+  std::error_code ec;
+  fs::create_directories(options.diff_dir, ec);
+  if (ec || !fs::is_directory(options.diff_dir))
+    throw output_error("cannot create --diff directory " + options.diff_dir);
+  for (const auto* list : {&plan.actual, &plan.reference})
+    for (const fs::path& p : *list) {
+      const fs::path parent = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+      if (fs::equivalent(parent, options.diff_dir, ec))
+        throw bad_input("--diff " + options.diff_dir + " holds the input " + p.string() +
+                        "; heat maps would overwrite it: choose another directory");
+    }
+}
+
+int run_compare(const CompareOptions& options, const GlobalOptions& global) {
+  const PairPlan plan = plan_pairs(options.actual, options.reference);
+  check_diff_dir(options, plan);
+  std::vector<PairResult> results = compare_all(plan, options);
+  sort_worst_first(results);
+  const bool pass = plan.missing.empty() &&
+                    std::all_of(results.begin(), results.end(), [](const PairResult& r) { return r.pass; });
+
+  if (options.json) {
+    std::cout << to_json(results, plan, pass).dump(2) << std::endl;
+  } else if (!global.quiet) {
+    print_table(results, plan, options, pass);
+    std::fflush(stdout);
+  }
+  if (!options.report.empty()) {
+    ReportSettings settings{options.threshold, options.max_failing, plan.directory_mode, options.actual,
+                            options.reference};
+    write_html_report(options.report, results, plan, settings);
+    if (!global.quiet) std::cerr << "recoil: wrote report " << options.report << "\n";
+  }
+  if (options.update) {
+    size_t updated = 0;
+    for (const PairResult& r : results)
+      if (!r.pass) {
+        copy_file_atomically(r.actual, r.reference);
+        ++updated;
+      }
+    if (!global.quiet) std::cerr << "recoil: updated " << updated << " reference frame(s)\n";
+  }
+  return pass ? 0 : 1;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app, const GlobalOptions& global, Action& action) {
+  auto options = std::make_shared<CompareOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare",
+      "Visual regression: compare an actual frame with a reference frame, or two directories of frames paired by "
+      "file name (*.png). Images are composited over black; a pixel fails when its largest channel difference "
+      "exceeds --threshold, and a pair fails when more than --max-failing of its pixels fail. Reports failing "
+      "fraction, max difference, PSNR and SSIM, worst first. Exit 0 within tolerance, 1 beyond it (or frames "
+      "missing), 2 on bad input (size mismatch, unreadable PNG, a file compared with a directory).");
+  cmd->fallthrough();  // -q and --log-json after the subcommand reach the main app
+  cmd->add_option("ACTUAL", options->actual, "Rendered frame, or directory of frames")->required();
+  cmd->add_option("REF", options->reference, "Reference frame, or directory of reference frames")->required();
+  cmd->add_option("--threshold", options->threshold, "Per-pixel difference in [0,1] above which a pixel fails")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--max-failing", options->max_failing, "Largest fraction of failing pixels a pair may have")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--diff", options->diff_dir, "Write a heat-map PNG per pair into DIR (red to white: failing)");
+  cmd->add_option("--report", options->report,
+                  "Write one self-contained HTML page: reference, actual and heat map side by side, worst first");
+  cmd->add_flag("--json", options->json, "Print the metrics as JSON on stdout instead of a table");
+  cmd->add_flag("--update", options->update,
+                "After reporting, copy actual over reference for the failing pairs only (accept new renders)");
+  cmd->footer(
+      "Examples:\n"
+      "  recoil compare out/frame_0001.png golden/frame_0001.png\n"
+      "  recoil compare out/ golden/ --diff diffs/ --report report.html\n"
+      "  recoil compare out/ golden/ --threshold 0.05 --max-failing 0.01 --json > metrics.json\n"
+      "  recoil compare out/ golden/ --update      # accept the new look of the frames that changed\n"
+      "Missing frames (in REF, not in ACTUAL) fail the comparison; extra frames are listed only.");
+  cmd->callback([options, &global, &action] {
+    action = [options, &global] { return run_compare(*options, global); };
+  });
+}
+
+}  // namespace recoil::cli

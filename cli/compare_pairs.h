@@ -1,0 +1,44 @@
+#pragma once
+// `recoil compare` building blocks: which files to pair, and the outcome of
+// one pair. Kept apart from the command so the report writer shares them.
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "render/image_metrics.h"
+
+namespace recoil::cli {
+
+// What to compare: two files (one pair), or two directories whose *.png files
+// pair by file name. Sorted by name so every run lists them in the same order.
+struct PairPlan {
+  bool directory_mode = false;
+  std::vector<std::filesystem::path> actual;     // pairs[i] = (actual[i], reference[i])
+  std::vector<std::filesystem::path> reference;
+  std::vector<std::filesystem::path> missing;    // in REF but not in ACTUAL (reference paths)
+  std::vector<std::filesystem::path> extra;      // in ACTUAL but not in REF (actual paths)
+};
+
+// Throws recoil::Error(bad_input) naming the path when one does not exist,
+// when a file is mixed with a directory, or when REF holds no *.png file.
+PairPlan plan_pairs(const std::filesystem::path& actual, const std::filesystem::path& reference);
+
+struct PairResult {
+  std::filesystem::path actual;
+  std::filesystem::path reference;
+  render::ImageComparison metrics;
+  bool pass = true;
+  std::vector<std::uint8_t> diff_png;  // the heat map, encoded, only when a report is written
+};
+
+// Worst first: failing pairs before passing ones, then larger failing
+// fraction, then larger max difference, then lower SSIM, then by path (so
+// ties keep a fixed order).
+void sort_worst_first(std::vector<PairResult>& results);
+
+// The label of a pair in tables and reports: the file name in directory mode,
+// the actual path for a single pair.
+std::string pair_label(const PairResult& result, bool directory_mode);
+
+}  // namespace recoil::cli

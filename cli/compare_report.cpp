@@ -1,0 +1,128 @@
+#include "cli/compare_report.h"
+
+#include <cstdio>
+#include <ostream>
+
+#include "cli/compare_io.h"
+
+namespace recoil::cli {
+namespace fs = std::filesystem;
+namespace {
+
+std::string html_escape(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (char c : text) {
+    switch (c) {
+      case '&': out += "&amp;"; break;
+      case '<': out += "&lt;"; break;
+      case '>': out += "&gt;"; break;
+      case '"': out += "&quot;"; break;
+      case '\'': out += "&#39;"; break;
+      default: out += c;
+    }
+  }
+  return out;
+}
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+const char* style_sheet = R"(
+body { font-family: system-ui, sans-serif; margin: 1.5em; background: #1e1e1e; color: #ddd; }
+h1 { font-size: 1.4em; margin-bottom: 0.2em; }
+.summary { margin: 0.5em 0 1.5em; }
+.verdict { font-weight: bold; padding: 0.1em 0.5em; border-radius: 4px; }
+.pass .verdict, .verdict.pass { background: #2e7d32; color: #fff; }
+.fail .verdict, .verdict.fail { background: #c62828; color: #fff; }
+section.pair { border-top: 1px solid #444; padding: 0.8em 0 1.2em; }
+section.pair h2 { font-size: 1.1em; margin: 0 0 0.3em; }
+.metrics { font-family: ui-monospace, monospace; font-size: 0.9em; color: #bbb; margin-bottom: 0.6em; }
+.images { display: grid; grid-template-columns: repeat(3, 1fr); gap: 0.8em; }
+figure { margin: 0; }
+figcaption { font-size: 0.85em; color: #aaa; margin-bottom: 0.2em; }
+figure img { width: 100%; height: auto; image-rendering: pixelated; background: #000; border: 1px solid #333; }
+ul.files { font-family: ui-monospace, monospace; font-size: 0.9em; }
+)";
+
+void write_figure(std::ostream& out, const std::string& caption, const std::vector<std::uint8_t>& png) {
+  out << "<figure><figcaption>" << html_escape(caption) << "</figcaption><img alt=\"" << html_escape(caption)
+      << "\" src=\"data:image/png;base64," << base64_encode(png) << "\"></figure>\n";
+}
+
+void write_file_list(std::ostream& out, const std::string& title, const std::vector<fs::path>& files) {
+  if (files.empty()) return;
+  out << "<h2>" << html_escape(title) << " (" << files.size() << ")</h2>\n<ul class=\"files\">\n";
+  for (const fs::path& f : files) out << "<li>" << html_escape(f.string()) << "</li>\n";
+  out << "</ul>\n";
+}
+
+}  // namespace
+
+std::string base64_encode(const std::vector<std::uint8_t>& bytes) {
+  static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const std::uint32_t v = (std::uint32_t(bytes[i]) << 16) | (std::uint32_t(bytes[i + 1]) << 8) | bytes[i + 2];
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += alphabet[(v >> 6) & 63];
+    out += alphabet[v & 63];
+  }
+  const size_t rest = bytes.size() - i;
+  if (rest > 0) {
+    std::uint32_t v = std::uint32_t(bytes[i]) << 16;
+    if (rest == 2) v |= std::uint32_t(bytes[i + 1]) << 8;
+    out += alphabet[(v >> 18) & 63];
+    out += alphabet[(v >> 12) & 63];
+    out += rest == 2 ? alphabet[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+void write_html_report(const fs::path& path, const std::vector<PairResult>& results, const PairPlan& plan,
+                       const ReportSettings& settings) {
+  size_t failing = 0;
+  for (const PairResult& r : results) failing += r.pass ? 0 : 1;
+  const bool pass = failing == 0 && plan.missing.empty();
+
+  AtomicFile file(path);
+  std::ostream& out = file.stream();
+  out << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n"
+      << "<title>recoil compare: " << (pass ? "pass" : "FAIL") << "</title>\n<style>" << style_sheet
+      << "</style>\n</head>\n<body>\n";
+  out << "<h1>recoil compare <span class=\"verdict " << (pass ? "pass\">PASS" : "fail\">FAIL") << "</span></h1>\n";
+  out << "<div class=\"summary\">actual: <code>" << html_escape(settings.actual_root.string())
+      << "</code><br>reference: <code>" << html_escape(settings.reference_root.string()) << "</code><br>"
+      << results.size() << " pair(s), " << failing << " beyond tolerance, " << plan.missing.size() << " missing, "
+      << plan.extra.size() << " extra &mdash; a pixel fails when its largest channel difference exceeds "
+      << format("%g", settings.threshold) << "; a pair fails when more than "
+      << format("%g", settings.max_failing * 100.0) << "% of its pixels fail. Worst first.</div>\n";
+  write_file_list(out, "Missing from actual", plan.missing);
+  write_file_list(out, "Extra in actual", plan.extra);
+
+  for (const PairResult& r : results) {
+    const render::ImageComparison& m = r.metrics;
+    out << "<section class=\"pair " << (r.pass ? "pass" : "fail") << "\">\n<h2><span class=\"verdict\">"
+        << (r.pass ? "pass" : "FAIL") << "</span> " << html_escape(pair_label(r, settings.directory_mode))
+        << "</h2>\n<div class=\"metrics\">" << m.width << "x" << m.height << " &middot; failing "
+        << format("%.4f", m.failing_fraction * 100.0) << "% (" << m.failing_pixels << " px) &middot; max difference "
+        << format("%.4f", m.max_difference) << " &middot; PSNR "
+        << (m.psnr ? format("%.2f", *m.psnr) + " dB" : std::string("&infin; (identical)")) << " &middot; SSIM "
+        << format("%.5f", m.ssim) << "</div>\n<div class=\"images\">\n";
+    write_figure(out, "reference: " + r.reference.string(), read_file_bytes(r.reference));
+    write_figure(out, "actual: " + r.actual.string(), read_file_bytes(r.actual));
+    write_figure(out, "difference (red to white: failing)", r.diff_png);
+    out << "</div>\n</section>\n";
+  }
+  out << "</body>\n</html>\n";
+  file.commit();
+}
+
+}  // namespace recoil::cli
