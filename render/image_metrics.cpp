@@ -89,6 +89,7 @@ double ssim_luma(const std::vector<double>& x, const std::vector<double>& y, int
   // stays small and the vertical pass reads cache-resident rows.
   std::vector<double> ring(static_cast<size_t>(ssim_window) * n_moments * out_w);
   std::vector<double> products(static_cast<size_t>(n_moments) * width);
+  std::vector<double> mu(static_cast<size_t>(n_moments) * out_w);  // filtered moments of one output row
   double total = 0.0;
   for (int row = 0; row < height; ++row) {
     const double* xr = x.data() + static_cast<size_t>(row) * width;
@@ -106,13 +107,16 @@ double ssim_luma(const std::vector<double>& x, const std::vector<double>& y, int
       pxy[i] = xr[i] * yr[i];
     }
     double* slot = ring.data() + static_cast<size_t>(row % ssim_window) * n_moments * out_w;
+    // Taps outermost, pixels innermost: contiguous loops the compiler
+    // vectorises; each output still sums its taps in order k = 0..10.
     for (int m = 0; m < n_moments; ++m) {
       const double* src = products.data() + static_cast<size_t>(m) * width;
       double* dst = slot + static_cast<size_t>(m) * out_w;
-      for (int i = 0; i < out_w; ++i) {
-        double s = 0.0;
-        for (int k = 0; k < ssim_window; ++k) s += w[k] * src[i + k];
-        dst[i] = s;
+      for (int i = 0; i < out_w; ++i) dst[i] = w[0] * src[i];
+      for (int k = 1; k < ssim_window; ++k) {
+        const double wk = w[k];
+        const double* shifted = src + k;
+        for (int i = 0; i < out_w; ++i) dst[i] += wk * shifted[i];
       }
     }
     if (row < ssim_window - 1) continue;
@@ -121,18 +125,27 @@ double ssim_luma(const std::vector<double>& x, const std::vector<double>& y, int
     std::array<const double*, ssim_window> rows{};
     for (int k = 0; k < ssim_window; ++k)
       rows[k] = ring.data() + static_cast<size_t>((row - (ssim_window - 1) + k) % ssim_window) * n_moments * out_w;
+    for (int m = 0; m < n_moments; ++m) {
+      const size_t offset = static_cast<size_t>(m) * out_w;
+      double* dst = mu.data() + offset;
+      for (int i = 0; i < out_w; ++i) dst[i] = w[0] * rows[0][offset + i];
+      for (int k = 1; k < ssim_window; ++k) {
+        const double wk = w[k];
+        const double* src = rows[k] + offset;
+        for (int i = 0; i < out_w; ++i) dst[i] += wk * src[i];
+      }
+    }
+    const double* mux = mu.data();
+    const double* muy = mux + out_w;
+    const double* muxx = muy + out_w;
+    const double* muyy = muxx + out_w;
+    const double* muxy = muyy + out_w;
     double row_sum = 0.0;
     for (int i = 0; i < out_w; ++i) {
-      std::array<double, n_moments> mu{};
-      for (int m = 0; m < n_moments; ++m) {
-        double s = 0.0;
-        for (int k = 0; k < ssim_window; ++k) s += w[k] * rows[k][static_cast<size_t>(m) * out_w + i];
-        mu[m] = s;
-      }
-      const double ux = mu[0], uy = mu[1];
-      const double vx = mu[2] - ux * ux;
-      const double vy = mu[3] - uy * uy;
-      const double vxy = mu[4] - ux * uy;
+      const double ux = mux[i], uy = muy[i];
+      const double vx = muxx[i] - ux * ux;
+      const double vy = muyy[i] - uy * uy;
+      const double vxy = muxy[i] - ux * uy;
       row_sum += ((2.0 * ux * uy + c1) * (2.0 * vxy + c2)) / ((ux * ux + uy * uy + c1) * (vx + vy + c2));
     }
     total += row_sum;
