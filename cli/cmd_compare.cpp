@@ -170,27 +170,37 @@ void add_compare_command(CLI::App& app, const GlobalOptions& global, Action& act
   auto options = std::make_shared<CompareOptions>();
   CLI::App* cmd = app.add_subcommand(
       "compare",
-      "Visual regression: compare an actual frame with a reference frame, or two directories of frames paired by "
-      "file name (*.png). Images are composited over black; a pixel fails when its largest channel difference "
-      "exceeds --threshold, and a pair fails when more than --max-failing of its pixels fail. Reports failing "
-      "fraction, max difference, PSNR and SSIM, worst first. Exit 0 within tolerance, 1 beyond it (or frames "
-      "missing), 2 on bad input (size mismatch, unreadable PNG, a file compared with a directory).");
+      "Visual regression: compare frames with reference frames; exit 1 when they differ beyond tolerance");
   cmd->fallthrough();  // -q and --log-json after the subcommand reach the main app
-  cmd->add_option("ACTUAL", options->actual, "Rendered frame, or directory of frames")->required();
-  cmd->add_option("REF", options->reference, "Reference frame, or directory of reference frames")->required();
+  cmd->add_option("ACTUAL", options->actual, "Rendered frame, or directory of frames")->required()->type_name("PATH");
+  cmd->add_option("REF", options->reference, "Reference frame, or directory of reference frames")
+      ->required()
+      ->type_name("PATH");
   cmd->add_option("--threshold", options->threshold, "Per-pixel difference in [0,1] above which a pixel fails")
+      ->type_name("T")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--max-failing", options->max_failing, "Largest fraction of failing pixels a pair may have")
+      ->type_name("F")
       ->check(CLI::Range(0.0, 1.0))
       ->capture_default_str();
-  cmd->add_option("--diff", options->diff_dir, "Write a heat-map PNG per pair into DIR (red to white: failing)");
+  cmd->add_option("--diff", options->diff_dir,
+                  "Write a heat-map PNG per pair into DIR, named like the frame (red to white: failing)")
+      ->type_name("DIR");
   cmd->add_option("--report", options->report,
-                  "Write one self-contained HTML page: reference, actual and heat map side by side, worst first");
+                  "Write one self-contained HTML page: reference, actual and heat map side by side, worst first")
+      ->type_name("FILE.html");
   cmd->add_flag("--json", options->json, "Print the metrics as JSON on stdout instead of a table");
   cmd->add_flag("--update", options->update,
                 "After reporting, copy actual over reference for the failing pairs only (accept new renders)");
   cmd->footer(
+      "Visual regression: compare an actual frame with a reference frame, or two directories\n"
+      "of frames paired by file name (*.png). Images are composited over black; a pixel fails\n"
+      "when its largest channel difference exceeds --threshold, and a pair fails when more\n"
+      "than --max-failing of its pixels fail. Reports failing fraction, max difference, PSNR\n"
+      "and SSIM (as scikit-image's, Gaussian window), worst first.\n"
+      "Exit 0 within tolerance, 1 beyond it or frames missing, 2 on bad input (size mismatch,\n"
+      "unreadable PNG, a file compared with a directory).\n\n"
       "Examples:\n"
       "  recoil compare out/frame_0001.png golden/frame_0001.png\n"
       "  recoil compare out/ golden/ --diff diffs/ --report report.html\n"
