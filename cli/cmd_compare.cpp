@@ -55,7 +55,7 @@ std::vector<PairResult> compare_all(const PairPlan& plan, const CompareOptions& 
         if (options.diff_dir.empty() && options.report.empty()) continue;
         const render::Image heat = render::difference_heatmap(loaded.actual, loaded.reference, options.threshold);
         if (!options.diff_dir.empty()) render::write_png(diff_dir / r.actual.filename(), heat);
-        if (!options.report.empty()) r.diff_png = render::encode_png(heat);
+        if (!options.report.empty()) prepare_report_images(r, loaded.actual, loaded.reference, heat);
       } catch (...) {
         errors[i] = std::current_exception();
       }

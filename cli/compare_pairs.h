@@ -29,7 +29,10 @@ struct PairResult {
   std::filesystem::path reference;
   render::ImageComparison metrics;
   bool pass = true;
-  std::vector<std::uint8_t> diff_png;  // the heat map, encoded, only when a report is written
+  // Only when a report is written (see compare_report.h): the full-size heat
+  // map as PNG for failing pairs, and small PNGs of reference, actual and heat map.
+  std::vector<std::uint8_t> diff_png;
+  std::vector<std::vector<std::uint8_t>> thumbnails;
 };
 
 // Worst first: failing pairs before passing ones, then larger failing

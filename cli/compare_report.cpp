@@ -1,9 +1,12 @@
 #include "cli/compare_report.h"
 
+#include <algorithm>
 #include <cstdio>
 #include <ostream>
 
 #include "cli/compare_io.h"
+#include "core/check.h"
+#include "render/png.h"
 
 namespace recoil::cli {
 namespace fs = std::filesystem;
@@ -62,6 +65,34 @@ void write_file_list(std::ostream& out, const std::string& title, const std::vec
 
 }  // namespace
 
+render::Image downscale_to_width(const render::Image& image, int max_width) {
+  const int factor = (image.width + max_width - 1) / max_width;
+  if (factor <= 1) return image;
+  render::Image small((image.width + factor - 1) / factor, (image.height + factor - 1) / factor);
+  for (int y = 0; y < small.height; ++y)
+    for (int x = 0; x < small.width; ++x) {
+      int sum[4] = {0, 0, 0, 0};
+      int count = 0;
+      for (int sy = y * factor; sy < std::min(image.height, (y + 1) * factor); ++sy)
+        for (int sx = x * factor; sx < std::min(image.width, (x + 1) * factor); ++sx) {
+          const std::uint8_t* p = image.pixel(sx, sy);
+          for (int c = 0; c < 4; ++c) sum[c] += p[c];
+          ++count;
+        }
+      std::uint8_t* q = small.pixel(x, y);
+      for (int c = 0; c < 4; ++c) q[c] = static_cast<std::uint8_t>((sum[c] + count / 2) / count);
+    }
+  return small;
+}
+
+void prepare_report_images(PairResult& result, const render::Image& actual, const render::Image& reference,
+                           const render::Image& heat) {
+  result.thumbnails.clear();
+  for (const render::Image* image : {&reference, &actual, &heat})
+    result.thumbnails.push_back(render::encode_png(downscale_to_width(*image, report_thumbnail_width)));
+  if (!result.pass) result.diff_png = render::encode_png(heat);
+}
+
 std::string base64_encode(const std::vector<std::uint8_t>& bytes) {
   static const char alphabet[] = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
   std::string out;
@@ -103,10 +134,12 @@ void write_html_report(const fs::path& path, const std::vector<PairResult>& resu
       << results.size() << " pair(s), " << failing << " beyond tolerance, " << plan.missing.size() << " missing, "
       << plan.extra.size() << " extra &mdash; a pixel fails when its largest channel difference exceeds "
       << format("%g", settings.threshold) << "; a pair fails when more than "
-      << format("%g", settings.max_failing * 100.0) << "% of its pixels fail. Worst first.</div>\n";
+      << format("%g", settings.max_failing * 100.0) << "% of its pixels fail. Worst first; the "
+      << report_full_size_pairs << " worst failing pairs at full size, the others as thumbnails.</div>\n";
   write_file_list(out, "Missing from actual", plan.missing);
   write_file_list(out, "Extra in actual", plan.extra);
 
+  size_t shown_full = 0;
   for (const PairResult& r : results) {
     const render::ImageComparison& m = r.metrics;
     out << "<section class=\"pair " << (r.pass ? "pass" : "fail") << "\">\n<h2><span class=\"verdict\">"
@@ -116,9 +149,18 @@ void write_html_report(const fs::path& path, const std::vector<PairResult>& resu
         << format("%.4f", m.max_difference) << " &middot; PSNR "
         << (m.psnr ? format("%.2f", *m.psnr) + " dB" : std::string("&infin; (identical)")) << " &middot; SSIM "
         << format("%.5f", m.ssim) << "</div>\n<div class=\"images\">\n";
-    write_figure(out, "reference: " + r.reference.string(), read_file_bytes(r.reference));
-    write_figure(out, "actual: " + r.actual.string(), read_file_bytes(r.actual));
-    write_figure(out, "difference (red to white: failing)", r.diff_png);
+    const bool full_size = !r.pass && shown_full < report_full_size_pairs;
+    RECOIL_CHECK(r.thumbnails.size() == 3 && (!full_size || !r.diff_png.empty()), "report images not prepared");
+    if (full_size) {
+      ++shown_full;
+      write_figure(out, "reference: " + r.reference.string(), read_file_bytes(r.reference));
+      write_figure(out, "actual: " + r.actual.string(), read_file_bytes(r.actual));
+      write_figure(out, "difference (red to white: failing)", r.diff_png);
+    } else {
+      write_figure(out, "reference (thumbnail): " + r.reference.string(), r.thumbnails[0]);
+      write_figure(out, "actual (thumbnail): " + r.actual.string(), r.thumbnails[1]);
+      write_figure(out, "difference (thumbnail; red to white: failing)", r.thumbnails[2]);
+    }
     out << "</div>\n</section>\n";
   }
   out << "</body>\n</html>\n";

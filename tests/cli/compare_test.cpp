@@ -5,6 +5,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli/compare_report.h"
 #include "render/png.h"
 #include "tests/test_support.h"
 
@@ -220,6 +221,14 @@ TEST(CompareCli, ReportEmbedsThreeImagesPerPairWorstFirst) {
   EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 6u);
   EXPECT_NE(html.find("<!DOCTYPE html>"), std::string::npos);
   EXPECT_LT(html.find("zzz_bad.png"), html.find("aaa_good.png")) << "failing pair first";
+  // The failing pair embeds the original files; the passing one thumbnails.
+  const std::string bad_reference = slurp(dir / "ref/zzz_bad.png");
+  EXPECT_NE(html.find(cli::base64_encode(std::vector<std::uint8_t>(bad_reference.begin(), bad_reference.end()))),
+            std::string::npos);
+  EXPECT_EQ(count(html, "<figcaption>reference (thumbnail)"), 1u);
+  EXPECT_EQ(count(html, "<figcaption>actual (thumbnail)"), 1u);
+  EXPECT_EQ(count(html, "<figcaption>difference (thumbnail"), 1u);
+  EXPECT_EQ(count(html, "<figcaption>reference: "), 1u);
   EXPECT_EQ(html.find("src=\"file:"), std::string::npos);
   EXPECT_EQ(html.find("src=\"/"), std::string::npos) << "self-contained: no links to files";
 }
