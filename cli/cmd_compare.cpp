@@ -1,22 +1,17 @@
 // `recoil compare ACTUAL REF`: visual regression of frames against references
 // (SPEC.md section 6). Exit 0 within tolerance, 1 beyond it, 2 bad input.
 #include <algorithm>
-#include <atomic>
 #include <cstdio>
-#include <exception>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <system_error>
-#include <thread>
 
 #include "cli/commands.h"
 #include "cli/compare_io.h"
 #include "cli/compare_pairs.h"
 #include "cli/compare_report.h"
 #include "core/error.h"
-#include "render/diff_heatmap.h"
-#include "render/png.h"
 
 namespace recoil::cli {
 namespace fs = std::filesystem;
@@ -32,44 +27,6 @@ struct CompareOptions {
   bool json = false;
   bool update = false;
 };
-
-// Compares every planned pair, several at once; each result lands at its own
-// index, so output does not depend on scheduling. The first error by pair
-// index is rethrown, so which error is reported does not either.
-std::vector<PairResult> compare_all(const PairPlan& plan, const CompareOptions& options) {
-  const size_t n = plan.actual.size();
-  std::vector<PairResult> results(n);
-  std::vector<std::exception_ptr> errors(n);
-  std::atomic<size_t> next{0};
-  const fs::path diff_dir = options.diff_dir;
-  auto worker = [&] {
-    for (size_t i = next++; i < n; i = next++) {
-      try {
-        PairResult& r = results[i];
-        r.actual = plan.actual[i];
-        r.reference = plan.reference[i];
-        const render::LoadedComparison loaded =
-            render::compare_image_files(r.actual, r.reference, options.threshold);
-        r.metrics = loaded.metrics;
-        r.pass = r.metrics.failing_fraction <= options.max_failing;
-        if (options.diff_dir.empty() && options.report.empty()) continue;
-        const render::Image heat = render::difference_heatmap(loaded.actual, loaded.reference, options.threshold);
-        if (!options.diff_dir.empty()) render::write_png(diff_dir / r.actual.filename(), heat);
-        if (!options.report.empty()) prepare_report_images(r, loaded.actual, loaded.reference, heat);
-      } catch (...) {
-        errors[i] = std::current_exception();
-      }
-    }
-  };
-  const size_t threads = std::clamp<size_t>(std::thread::hardware_concurrency(), 1, std::min<size_t>(n, 16));
-  std::vector<std::thread> pool;
-  for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
-  worker();
-  for (std::thread& t : pool) t.join();
-  for (const std::exception_ptr& e : errors)
-    if (e) std::rethrow_exception(e);
-  return results;
-}
 
 std::string format(const char* pattern, double value) {
   char buffer[64];
@@ -135,7 +92,8 @@ void check_diff_dir(const CompareOptions& options, const PairPlan& plan) {
 int run_compare(const CompareOptions& options, const GlobalOptions& global) {
   const PairPlan plan = plan_pairs(options.actual, options.reference);
   check_diff_dir(options, plan);
-  std::vector<PairResult> results = compare_all(plan, options);
+  const CompareSettings settings{options.threshold, options.max_failing, options.diff_dir, !options.report.empty()};
+  std::vector<PairResult> results = compare_pairs(plan, settings);
   sort_worst_first(results);
   const bool pass = plan.missing.empty() &&
                     std::all_of(results.begin(), results.end(), [](const PairResult& r) { return r.pass; });
@@ -147,9 +105,9 @@ int run_compare(const CompareOptions& options, const GlobalOptions& global) {
     std::fflush(stdout);
   }
   if (!options.report.empty()) {
-    ReportSettings settings{options.threshold, options.max_failing, plan.directory_mode, options.actual,
-                            options.reference};
-    write_html_report(options.report, results, plan, settings);
+    const ReportSettings report{options.threshold, options.max_failing, plan.directory_mode, options.actual,
+                                options.reference};
+    write_html_report(options.report, results, plan, report);
     if (!global.quiet) std::cerr << "recoil: wrote report " << options.report << "\n";
   }
   if (options.update) {

@@ -1,11 +1,17 @@
 #include "cli/compare_pairs.h"
 
 #include <algorithm>
+#include <atomic>
+#include <exception>
 #include <map>
 #include <system_error>
+#include <thread>
 #include <tuple>
 
+#include "cli/compare_report.h"
 #include "core/error.h"
+#include "render/diff_heatmap.h"
+#include "render/png.h"
 
 namespace recoil::cli {
 namespace fs = std::filesystem;
@@ -75,6 +81,42 @@ PairPlan plan_pairs(const fs::path& actual, const fs::path& reference) {
   for (const auto& [name, path] : actual_files)
     if (!reference_files.count(name)) plan.extra.push_back(path);
   return plan;
+}
+
+std::vector<PairResult> compare_pairs(const PairPlan& plan, const CompareSettings& settings) {
+  const size_t n = plan.actual.size();
+  std::vector<PairResult> results(n);
+  std::vector<std::exception_ptr> errors(n);
+  std::atomic<size_t> next{0};
+  auto worker = [&] {
+    for (size_t i = next++; i < n; i = next++) {
+      try {
+        PairResult& r = results[i];
+        r.actual = plan.actual[i];
+        r.reference = plan.reference[i];
+        const render::LoadedComparison loaded =
+            render::compare_image_files(r.actual, r.reference, settings.threshold);
+        r.metrics = loaded.metrics;
+        r.pass = r.metrics.failing_fraction <= settings.max_failing;
+        if (settings.diff_dir.empty() && !settings.report_images) continue;
+        const render::Image heat = render::difference_heatmap(loaded.actual, loaded.reference, settings.threshold);
+        if (!settings.diff_dir.empty()) render::write_png(settings.diff_dir / r.actual.filename(), heat);
+        if (settings.report_images) prepare_report_images(r, loaded.actual, loaded.reference, heat);
+      } catch (...) {
+        errors[i] = std::current_exception();
+      }
+    }
+  };
+  const size_t wanted = settings.threads > 0 ? static_cast<size_t>(settings.threads)
+                                             : std::max(1u, std::thread::hardware_concurrency());
+  const size_t threads = std::min({wanted, n, size_t(16)});
+  std::vector<std::thread> pool;
+  for (size_t t = 1; t < threads; ++t) pool.emplace_back(worker);
+  worker();
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  return results;
 }
 
 void sort_worst_first(std::vector<PairResult>& results) {

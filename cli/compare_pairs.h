@@ -35,6 +35,19 @@ struct PairResult {
   std::vector<std::vector<std::uint8_t>> thumbnails;
 };
 
+struct CompareSettings {
+  double threshold = render::default_compare_threshold;  // per-pixel difference that fails a pixel
+  double max_failing = 0.001;                            // fraction of failing pixels that fails a pair
+  std::filesystem::path diff_dir;                        // heat maps go here when not empty
+  bool report_images = false;                            // fill diff_png / thumbnails for the HTML page
+  int threads = 0;                                       // 0: one per core (at most 16)
+};
+
+// Decodes and compares every planned pair, several at once, in plan order.
+// Each result lands at its own index, so nothing depends on scheduling; the
+// first error by pair index is rethrown (recoil::Error naming the files).
+std::vector<PairResult> compare_pairs(const PairPlan& plan, const CompareSettings& settings);
+
 // Worst first: failing pairs before passing ones, then larger failing
 // fraction, then larger max difference, then lower SSIM, then by path (so
 // ties keep a fixed order).

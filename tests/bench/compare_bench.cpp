@@ -1,14 +1,16 @@
 // Cost of `recoil compare` on a 300-frame 1280x720 sequence (SPEC.md section
 // 6), split into its parts: metrics on decoded images, PNG decoding of both
 // frames, and the heat map (only with --diff or --report). Per-pair times are
-// measured on 20 distinct synthetic pairs and extrapolated to 300; all on one
-// thread (the command spreads pairs over the machine's cores).
+// measured on 20 distinct synthetic pairs and extrapolated to 300, on one
+// thread, then the command's pipeline on one thread and on every core.
 #include <filesystem>
 #include <algorithm>
 #include <cstdio>
 #include <random>
+#include <thread>
 #include <unistd.h>
 
+#include "cli/compare_pairs.h"
 #include "render/diff_heatmap.h"
 #include "render/image_metrics.h"
 #include "render/png.h"
@@ -81,12 +83,27 @@ void bench_compare() {
                                             dir / ("ref_" + std::to_string(i) + ".png"))
                     .metrics.ssim;
   });
+  // The command's own pipeline (decode + metrics per pair, pairs spread over
+  // threads), on the same 20 pairs, with one thread and with every core.
+  cli::PairPlan plan;
+  for (int i = 0; i < measured_pairs; ++i) {
+    plan.actual.push_back(dir / ("act_" + std::to_string(i) + ".png"));
+    plan.reference.push_back(dir / ("ref_" + std::to_string(i) + ".png"));
+  }
+  const int cores = int(std::max(1u, std::thread::hardware_concurrency()));
+  auto pipeline = [&](int threads) {
+    cli::CompareSettings settings;
+    settings.threads = threads;
+    return best_ms(2, [&] { checksum += cli::compare_pairs(plan, settings).size(); }) / measured_pairs;
+  };
+  const double pipeline_one = pipeline(1);
+  const double pipeline_all = pipeline(cores);
   const double heatmap = per_pair([&](int i) {
     checksum += render::encode_png(render::difference_heatmap(actuals[i], references[i], 0.02)).size();
   });
   fs::remove_all(dir);
 
-  BenchTable table("compare, 1280x720 pairs, one thread (measured on " + std::to_string(measured_pairs) +
+  BenchTable table("compare, 1280x720 pairs (measured on " + std::to_string(measured_pairs) +
                        " pairs, extrapolated to " + std::to_string(sequence) + ")",
                    {"stage", "ms/pair", "s per 300 pairs"});
   auto row = [&](const std::string& name, double ms) {
@@ -98,6 +115,8 @@ void bench_compare() {
   row("decode + metrics (plain `recoil compare`)", decode_and_metrics);
   row("heat map + PNG encode (--diff / --report)", heatmap);
   row("decode + metrics + heat map", decode_and_metrics + heatmap);
+  row("compare_pairs pipeline, 1 thread", pipeline_one);
+  row("compare_pairs pipeline, " + std::to_string(cores) + " threads", pipeline_all);
   table.print();
   std::printf("(checksum %.3f)\n", checksum);
 }

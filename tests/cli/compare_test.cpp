@@ -159,6 +159,15 @@ TEST(CompareCli, MissingFramesFailExtraFramesDoNot) {
   const CommandResult missing = run_recoil("compare " + q(dir / "ref") + " " + q(dir / "actual"));
   EXPECT_EQ(missing.exit_code, 1) << missing.out;
   EXPECT_NE(missing.out.find("MISSING"), std::string::npos) << missing.out;
+  // Nothing rendered at all: every reference frame is missing.
+  fs::create_directories(dir / "empty");
+  const CommandResult none = run_recoil("compare " + q(dir / "empty") + " " + q(dir / "actual") + " --json");
+  EXPECT_EQ(none.exit_code, 1) << none.err;
+  const nlohmann::json j = nlohmann::json::parse(none.out);
+  EXPECT_EQ(j["pairs"].size(), 0u);
+  EXPECT_EQ(j["missing"].size(), 2u);
+  // An empty reference directory is a wrong path, not a pass.
+  EXPECT_EQ(run_recoil("compare " + q(dir / "actual") + " " + q(dir / "empty")).exit_code, 2);
 }
 
 TEST(CompareCli, DiffWritesOneHeatMapPerPair) {
