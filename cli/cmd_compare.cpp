@@ -99,7 +99,9 @@ int run_compare(const CompareOptions& options, const GlobalOptions& global) {
                     std::all_of(results.begin(), results.end(), [](const PairResult& r) { return r.pass; });
 
   if (options.json) {
-    std::cout << to_json(results, plan, pass).dump(2) << std::endl;
+    // Paths are bytes; a name that is not UTF-8 is shown with U+FFFD rather than aborting.
+    std::cout << to_json(results, plan, pass).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace)
+              << std::endl;
   } else if (!global.quiet) {
     print_table(results, plan, options, pass);
     std::fflush(stdout);
