@@ -49,6 +49,13 @@ figure { margin: 0; }
 figcaption { font-size: 0.85em; color: #aaa; margin-bottom: 0.2em; }
 figure img { width: 100%; height: auto; image-rendering: pixelated; background: #000; border: 1px solid #333; }
 ul.files { font-family: ui-monospace, monospace; font-size: 0.9em; }
+table.index { border-collapse: collapse; font-family: ui-monospace, monospace; font-size: 0.85em; margin-bottom: 1em; }
+table.index td, table.index th { padding: 0.1em 0.8em; text-align: right; }
+table.index td:last-child, table.index th:last-child { text-align: left; }
+a { color: #8ab4f8; }
+.legend { display: flex; align-items: center; gap: 0.6em; font-size: 0.85em; color: #aaa; margin-bottom: 1em; }
+.ramp { width: 16em; height: 0.9em; border: 1px solid #444;
+        background: linear-gradient(to right, #000 0%, #800000 35%, #ff0000 35%, #ffff00 67%, #fff 100%); }
 )";
 
 void write_figure(std::ostream& out, const std::string& caption, const std::vector<std::uint8_t>& png) {
@@ -61,6 +68,23 @@ void write_file_list(std::ostream& out, const std::string& title, const std::vec
   out << "<h2>" << html_escape(title) << " (" << files.size() << ")</h2>\n<ul class=\"files\">\n";
   for (const fs::path& f : files) out << "<li>" << html_escape(f.string()) << "</li>\n";
   out << "</ul>\n";
+}
+
+// One line per pair, worst first, each linking to its images below.
+void write_index(std::ostream& out, const std::vector<PairResult>& results, bool directory_mode) {
+  out << "<table class=\"index\">\n<tr><th>status</th><th>failing %</th><th>max diff</th><th>PSNR dB</th>"
+         "<th>SSIM</th><th>frame</th></tr>\n";
+  for (size_t index = 0; index < results.size(); ++index) {
+    const PairResult& r = results[index];
+    const render::ImageComparison& m = r.metrics;
+    out << "<tr class=\"" << (r.pass ? "pass" : "fail") << "\"><td><span class=\"verdict\">"
+        << (r.pass ? "pass" : "FAIL") << "</span></td><td>" << format("%.4f", m.failing_fraction * 100.0)
+        << "</td><td>" << format("%.4f", m.max_difference) << "</td><td>"
+        << (m.psnr ? format("%.2f", *m.psnr) : std::string("&infin;")) << "</td><td>" << format("%.5f", m.ssim)
+        << "</td><td><a href=\"#pair-" << index << "\">" << html_escape(pair_label(r, directory_mode))
+        << "</a></td></tr>\n";
+  }
+  out << "</table>\n";
 }
 
 }  // namespace
@@ -136,13 +160,19 @@ void write_html_report(const fs::path& path, const std::vector<PairResult>& resu
       << format("%g", settings.threshold) << "; a pair fails when more than "
       << format("%g", settings.max_failing * 100.0) << "% of its pixels fail. Worst first; the "
       << report_full_size_pairs << " worst failing pairs at full size, the others as thumbnails.</div>\n";
+  out << "<div class=\"legend\">heat map: <span>identical</span><span class=\"ramp\"></span><span>difference 1"
+      << "</span>&mdash; dim scene with a red tint up to the threshold, then bright red, yellow, white when "
+         "failing</div>\n";
   write_file_list(out, "Missing from actual", plan.missing);
   write_file_list(out, "Extra in actual", plan.extra);
+  write_index(out, results, settings.directory_mode);
 
   size_t shown_full = 0;
-  for (const PairResult& r : results) {
+  for (size_t index = 0; index < results.size(); ++index) {
+    const PairResult& r = results[index];
     const render::ImageComparison& m = r.metrics;
-    out << "<section class=\"pair " << (r.pass ? "pass" : "fail") << "\">\n<h2><span class=\"verdict\">"
+    out << "<section class=\"pair " << (r.pass ? "pass" : "fail") << "\" id=\"pair-" << index
+        << "\">\n<h2><span class=\"verdict\">"
         << (r.pass ? "pass" : "FAIL") << "</span> " << html_escape(pair_label(r, settings.directory_mode))
         << "</h2>\n<div class=\"metrics\">" << m.width << "x" << m.height << " &middot; failing "
         << format("%.4f", m.failing_fraction * 100.0) << "% (" << m.failing_pixels << " px) &middot; max difference "
