@@ -6,7 +6,9 @@
 namespace recoil::cli {
 namespace {
 
-std::string encode(const std::string& text) { return base64_encode(std::vector<std::uint8_t>(text.begin(), text.end())); }
+std::string encode(const std::string& text) {
+  return base64_encode(std::vector<std::uint8_t>(text.begin(), text.end()));
+}
 
 TEST(CompareReport, Base64MatchesRfc4648Vectors) {
   EXPECT_EQ(encode(""), "");
