@@ -4,6 +4,7 @@
 #include <atomic>
 #include <exception>
 #include <map>
+#include <mutex>
 #include <system_error>
 #include <thread>
 #include <tuple>
@@ -88,6 +89,8 @@ std::vector<PairResult> compare_pairs(const PairPlan& plan, const CompareSetting
   std::vector<PairResult> results(n);
   std::vector<std::exception_ptr> errors(n);
   std::atomic<size_t> next{0};
+  std::mutex progress_mutex;
+  size_t done = 0;
   auto worker = [&] {
     for (size_t i = next++; i < n; i = next++) {
       try {
@@ -98,12 +101,18 @@ std::vector<PairResult> compare_pairs(const PairPlan& plan, const CompareSetting
             render::compare_image_files(r.actual, r.reference, settings.threshold);
         r.metrics = loaded.metrics;
         r.pass = r.metrics.failing_fraction <= settings.max_failing;
-        if (settings.diff_dir.empty() && !settings.report_images) continue;
-        const render::Image heat = render::difference_heatmap(loaded.actual, loaded.reference, settings.threshold);
-        if (!settings.diff_dir.empty()) render::write_png(settings.diff_dir / r.actual.filename(), heat);
-        if (settings.report_images) prepare_report_images(r, loaded.actual, loaded.reference, heat);
+        if (!settings.diff_dir.empty() || settings.report_images) {
+          const render::Image heat =
+              render::difference_heatmap(loaded.actual, loaded.reference, settings.threshold);
+          if (!settings.diff_dir.empty()) render::write_png(settings.diff_dir / r.actual.filename(), heat);
+          if (settings.report_images) prepare_report_images(r, loaded.actual, loaded.reference, heat);
+        }
       } catch (...) {
         errors[i] = std::current_exception();
+      }
+      if (settings.on_progress) {
+        const std::lock_guard<std::mutex> lock(progress_mutex);
+        settings.on_progress(++done, n);
       }
     }
   };

@@ -3,6 +3,7 @@
 // one pair. Kept apart from the command so the report writer shares them.
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -41,6 +42,9 @@ struct CompareSettings {
   std::filesystem::path diff_dir;                        // heat maps go here when not empty
   bool report_images = false;                            // fill diff_png / thumbnails for the HTML page
   int threads = 0;                                       // 0: one per core (at most 16)
+  // Called after each pair with (pairs done, total), one call at a time and
+  // with `done` rising by one per call; for progress display only.
+  std::function<void(size_t, size_t)> on_progress;
 };
 
 // Decodes and compares every planned pair, several at once, in plan order.

@@ -242,6 +242,30 @@ TEST(CompareCli, ReportEmbedsThreeImagesPerPairWorstFirst) {
   EXPECT_EQ(html.find("src=\"/"), std::string::npos) << "self-contained: no links to files";
 }
 
+TEST(CompareCli, LogJsonReportsProgressPerPair) {
+  const fs::path dir = scratch_dir("compare_progress");
+  fs::create_directories(dir / "actual");
+  fs::create_directories(dir / "ref");
+  for (int i = 1; i <= 3; ++i) {
+    render::write_png(dir / "ref" / numbered(i), frame(12, 12, i));
+    render::write_png(dir / "actual" / numbered(i), frame(12, 12, i));
+  }
+  const CommandResult r = run_recoil("--log-json compare " + q(dir / "actual") + " " + q(dir / "ref"));
+  EXPECT_EQ(r.exit_code, 0);
+  std::istringstream lines(r.err);
+  std::string line;
+  size_t expected_done = 0;
+  while (std::getline(lines, line)) {
+    const nlohmann::json event = nlohmann::json::parse(line);
+    EXPECT_EQ(event["command"], "compare");
+    EXPECT_EQ(event["done"].get<size_t>(), ++expected_done);
+    EXPECT_EQ(event["total"].get<size_t>(), 3u);
+  }
+  EXPECT_EQ(expected_done, 3u);
+  // Without --log-json and with stderr not a terminal: no progress at all.
+  EXPECT_EQ(run_recoil("compare " + q(dir / "actual") + " " + q(dir / "ref")).err, "");
+}
+
 TEST(CompareCli, HelpTeaches) {
   const CommandResult r = run_recoil("compare --help");
   EXPECT_EQ(r.exit_code, 0);
