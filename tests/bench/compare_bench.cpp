@@ -3,6 +3,8 @@
 // frames, and the heat map (only with --diff or --report). Per-pair times are
 // measured on 20 distinct synthetic pairs and extrapolated to 300, on one
 // thread, then the command's pipeline on one thread and on every core.
+#include <time.h>
+
 #include <filesystem>
 #include <algorithm>
 #include <cstdio>
@@ -49,6 +51,25 @@ render::Image perturbed(const render::Image& reference, unsigned seed) {
   return image;
 }
 
+struct Timing {
+  double wall_ms = 0.0;  // per pair, best of 2 runs
+  double cpu_ms = 0.0;   // per pair, process CPU time (all threads) over both runs / 2
+};
+
+double cpu_now_ms() {
+  timespec t{};
+  ::clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return t.tv_sec * 1e3 + t.tv_nsec * 1e-6;
+}
+
+// CPU time is reported beside wall time because the build machine is shared:
+// wall time there includes waiting for a core, CPU time does not.
+Timing measure(const std::function<void()>& all_pairs) {
+  const double cpu_start = cpu_now_ms();
+  const double wall = best_ms(2, all_pairs);
+  return {wall / measured_pairs, (cpu_now_ms() - cpu_start) / (2.0 * measured_pairs)};
+}
+
 void bench_compare() {
   std::vector<render::Image> references, actuals;
   for (int i = 0; i < measured_pairs; ++i) {
@@ -63,22 +84,21 @@ void bench_compare() {
   }
 
   auto per_pair = [&](const std::function<void(int)>& work) {
-    return best_ms(2, [&] {
-             for (int i = 0; i < measured_pairs; ++i) work(i);
-           }) /
-           measured_pairs;
+    return measure([&] {
+      for (int i = 0; i < measured_pairs; ++i) work(i);
+    });
   };
   double checksum = 0.0;
-  const double metrics = per_pair([&](int i) { checksum += render::compare_images(actuals[i], references[i]).ssim; });
-  const double ssim = per_pair([&](int i) {
+  const Timing metrics = per_pair([&](int i) { checksum += render::compare_images(actuals[i], references[i]).ssim; });
+  const Timing ssim = per_pair([&](int i) {
     checksum += render::ssim_luma(render::composited_luma(actuals[i]), render::composited_luma(references[i]),
                                   width, height);
   });
-  const double decode = per_pair([&](int i) {
+  const Timing decode = per_pair([&](int i) {
     checksum += render::read_png(dir / ("act_" + std::to_string(i) + ".png")).width +
                 render::read_png(dir / ("ref_" + std::to_string(i) + ".png")).width;
   });
-  const double decode_and_metrics = per_pair([&](int i) {
+  const Timing decode_and_metrics = per_pair([&](int i) {
     checksum += render::compare_image_files(dir / ("act_" + std::to_string(i) + ".png"),
                                             dir / ("ref_" + std::to_string(i) + ".png"))
                     .metrics.ssim;
@@ -94,27 +114,28 @@ void bench_compare() {
   auto pipeline = [&](int threads) {
     cli::CompareSettings settings;
     settings.threads = threads;
-    return best_ms(2, [&] { checksum += cli::compare_pairs(plan, settings).size(); }) / measured_pairs;
+    return measure([&] { checksum += cli::compare_pairs(plan, settings).size(); });
   };
-  const double pipeline_one = pipeline(1);
-  const double pipeline_all = pipeline(cores);
-  const double heatmap = per_pair([&](int i) {
+  const Timing pipeline_one = pipeline(1);
+  const Timing pipeline_all = pipeline(cores);
+  const Timing heatmap = per_pair([&](int i) {
     checksum += render::encode_png(render::difference_heatmap(actuals[i], references[i], 0.02)).size();
   });
   fs::remove_all(dir);
 
   BenchTable table("compare, 1280x720 pairs (measured on " + std::to_string(measured_pairs) +
                        " pairs, extrapolated to " + std::to_string(sequence) + ")",
-                   {"stage", "ms/pair", "s per 300 pairs"});
-  auto row = [&](const std::string& name, double ms) {
-    table.add_row({name, fixed(ms, 2), fixed(ms * sequence / 1000.0, 2)});
+                   {"stage", "wall ms/pair", "CPU ms/pair (all threads)", "wall s per 300 pairs"});
+  auto row = [&](const std::string& name, const Timing& t) {
+    table.add_row({name, fixed(t.wall_ms, 2), fixed(t.cpu_ms, 2), fixed(t.wall_ms * sequence / 1000.0, 2)});
   };
   row("metrics only (diff, PSNR, SSIM; images in memory)", metrics);
   row("  of which luma + SSIM", ssim);
   row("PNG decode of both frames", decode);
   row("decode + metrics (plain `recoil compare`)", decode_and_metrics);
   row("heat map + PNG encode (--diff / --report)", heatmap);
-  row("decode + metrics + heat map", decode_and_metrics + heatmap);
+  row("decode + metrics + heat map",
+      {decode_and_metrics.wall_ms + heatmap.wall_ms, decode_and_metrics.cpu_ms + heatmap.cpu_ms});
   row("compare_pairs pipeline, 1 thread", pipeline_one);
   row("compare_pairs pipeline, " + std::to_string(cores) + " threads", pipeline_all);
   table.print();
