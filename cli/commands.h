@@ -17,5 +17,6 @@ using Action = std::function<int()>;
 
 void add_info_command(CLI::App& app, const GlobalOptions& global, Action& action);
 void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& action);
+void add_compare_command(CLI::App& app, const GlobalOptions& global, Action& action);
 
 }  // namespace recoil::cli

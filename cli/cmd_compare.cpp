@@ -1,0 +1,211 @@
+// `recoil compare ACTUAL REF`: visual regression of frames against references
+// (SPEC.md section 6). Exit 0 within tolerance, 1 beyond it, 2 bad input.
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <functional>
+#include <iostream>
+#include <memory>
+#include <nlohmann/json.hpp>
+#include <system_error>
+
+#include "cli/commands.h"
+#include "cli/compare_io.h"
+#include "cli/compare_pairs.h"
+#include "cli/compare_report.h"
+#include "core/error.h"
+
+namespace recoil::cli {
+namespace fs = std::filesystem;
+namespace {
+
+struct CompareOptions {
+  std::string actual;
+  std::string reference;
+  double threshold = render::default_compare_threshold;
+  double max_failing = 0.001;
+  std::string diff_dir;
+  std::string report;
+  bool json = false;
+  bool update = false;
+};
+
+std::string format(const char* pattern, double value) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof buffer, pattern, value);
+  return buffer;
+}
+
+void print_table(const std::vector<PairResult>& results, const PairPlan& plan, const CompareOptions& options,
+                 bool pass) {
+  std::printf("%-7s %10s %9s %8s %8s  %s\n", "status", "failing", "max diff", "PSNR dB", "SSIM", "frame");
+  for (const PairResult& r : results) {
+    const render::ImageComparison& m = r.metrics;
+    std::printf("%-7s %9.4f%% %9.4f %8s %8.5f  %s\n", r.pass ? "pass" : "FAIL", m.failing_fraction * 100.0,
+                m.max_difference, m.psnr ? format("%.2f", *m.psnr).c_str() : "inf", m.ssim,
+                pair_label(r, plan.directory_mode).c_str());
+  }
+  for (const fs::path& p : plan.missing) std::printf("%-7s %48s  %s\n", "MISSING", "", p.filename().c_str());
+  for (const fs::path& p : plan.extra) std::printf("%-7s %48s  %s\n", "extra", "", p.filename().c_str());
+  const size_t failing = static_cast<size_t>(std::count_if(results.begin(), results.end(),
+                                                           [](const PairResult& r) { return !r.pass; }));
+  std::printf("%s: %zu of %zu pair(s) beyond tolerance, %zu missing, %zu extra (threshold %g, max failing %g)\n",
+              pass ? "PASS" : "FAIL", failing, results.size(), plan.missing.size(), plan.extra.size(),
+              options.threshold, options.max_failing);
+}
+
+nlohmann::ordered_json to_json(const std::vector<PairResult>& results, const PairPlan& plan, bool pass) {
+  nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
+  for (const PairResult& r : results) {
+    const render::ImageComparison& m = r.metrics;
+    pairs.push_back({{"actual", r.actual.string()},
+                     {"reference", r.reference.string()},
+                     {"pass", r.pass},
+                     {"failing_fraction", m.failing_fraction},
+                     {"max_difference", m.max_difference},
+                     {"psnr", m.psnr ? nlohmann::ordered_json(*m.psnr) : nlohmann::ordered_json(nullptr)},
+                     {"ssim", m.ssim}});
+  }
+  auto paths = [](const std::vector<fs::path>& list) {
+    nlohmann::ordered_json out = nlohmann::ordered_json::array();
+    for (const fs::path& p : list) out.push_back(p.string());
+    return out;
+  };
+  return {{"pass", pass}, {"pairs", pairs}, {"missing", paths(plan.missing)}, {"extra", paths(plan.extra)}};
+}
+
+// --diff must not be a folder of the inputs: heat maps are named like the
+// frames and would overwrite them.
+void check_diff_dir(const CompareOptions& options, const PairPlan& plan) {
+  if (options.diff_dir.empty()) return;
+  std::error_code ec;
+  fs::create_directories(options.diff_dir, ec);
+  if (ec || !fs::is_directory(options.diff_dir))
+    throw output_error("cannot create --diff directory " + options.diff_dir);
+  for (const auto* list : {&plan.actual, &plan.reference})
+    for (const fs::path& p : *list) {
+      const fs::path parent = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+      if (fs::equivalent(parent, options.diff_dir, ec))
+        throw bad_input("--diff " + options.diff_dir + " holds the input " + p.string() +
+                        "; heat maps would overwrite it: choose another directory");
+    }
+}
+
+// Progress on stderr: JSON lines with --log-json; otherwise a bar redrawn in
+// place (at most every 0.2 s) only when stderr is a terminal and not -q.
+std::function<void(size_t, size_t)> progress_reporter(const GlobalOptions& global) {
+  if (global.log_json)
+    return [](size_t done, size_t total) {
+      std::fprintf(stderr, "{\"command\":\"compare\",\"event\":\"progress\",\"done\":%zu,\"total\":%zu}\n", done,
+                   total);
+    };
+  if (global.quiet || !::isatty(STDERR_FILENO)) return {};
+  using Clock = std::chrono::steady_clock;
+  const Clock::time_point start = Clock::now();
+  auto last = std::make_shared<Clock::time_point>(start - std::chrono::seconds(1));
+  return [start, last](size_t done, size_t total) {
+    const Clock::time_point now = Clock::now();
+    if (done < total && now - *last < std::chrono::milliseconds(200)) return;
+    *last = now;
+    const double seconds = std::chrono::duration<double>(now - start).count();
+    const double rate = seconds > 0.0 ? done / seconds : 0.0;
+    const int width = 30, filled = static_cast<int>(width * done / std::max<size_t>(total, 1));
+    const int eta = rate > 0.0 ? static_cast<int>((total - done) / rate + 0.5) : 0;
+    std::fprintf(stderr, "\r[%s%s] %zu/%zu pairs, %.1f/s, ETA %d:%02d ", std::string(filled, '#').c_str(),
+                 std::string(width - filled, '.').c_str(), done, total, rate, eta / 60, eta % 60);
+    if (done == total) std::fprintf(stderr, "\r%*s\r", width + 50, "");
+    std::fflush(stderr);
+  };
+}
+
+int run_compare(const CompareOptions& options, const GlobalOptions& global) {
+  const PairPlan plan = plan_pairs(options.actual, options.reference);
+  check_diff_dir(options, plan);
+  CompareSettings settings;
+  settings.threshold = options.threshold;
+  settings.max_failing = options.max_failing;
+  settings.diff_dir = options.diff_dir;
+  settings.report_images = !options.report.empty();
+  settings.on_progress = progress_reporter(global);
+  std::vector<PairResult> results = compare_pairs(plan, settings);
+  sort_worst_first(results);
+  const bool pass = plan.missing.empty() &&
+                    std::all_of(results.begin(), results.end(), [](const PairResult& r) { return r.pass; });
+
+  if (options.json) {
+    // Paths are bytes; a name that is not UTF-8 is shown with U+FFFD rather than aborting.
+    std::cout << to_json(results, plan, pass).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace)
+              << std::endl;
+  } else if (!global.quiet) {
+    print_table(results, plan, options, pass);
+    std::fflush(stdout);
+  }
+  if (!options.report.empty()) {
+    const ReportSettings report{options.threshold, options.max_failing, plan.directory_mode, options.actual,
+                                options.reference};
+    write_html_report(options.report, results, plan, report);
+    if (!global.quiet) std::cerr << "recoil: wrote report " << options.report << "\n";
+  }
+  if (options.update) {
+    size_t updated = 0;
+    for (const PairResult& r : results)
+      if (!r.pass) {
+        copy_file_atomically(r.actual, r.reference);
+        ++updated;
+      }
+    if (!global.quiet) std::cerr << "recoil: updated " << updated << " reference frame(s)\n";
+  }
+  return pass ? 0 : 1;
+}
+
+}  // namespace
+
+void add_compare_command(CLI::App& app, const GlobalOptions& global, Action& action) {
+  auto options = std::make_shared<CompareOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "compare",
+      "Visual regression: compare frames with reference frames; exit 1 when they differ beyond tolerance");
+  cmd->fallthrough();  // -q and --log-json after the subcommand reach the main app
+  cmd->add_option("ACTUAL", options->actual, "Rendered frame, or directory of frames")->required()->type_name("PATH");
+  cmd->add_option("REF", options->reference, "Reference frame, or directory of reference frames")
+      ->required()
+      ->type_name("PATH");
+  cmd->add_option("--threshold", options->threshold, "Per-pixel difference in [0,1] above which a pixel fails")
+      ->type_name("T")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--max-failing", options->max_failing, "Largest fraction of failing pixels a pair may have")
+      ->type_name("F")
+      ->check(CLI::Range(0.0, 1.0))
+      ->capture_default_str();
+  cmd->add_option("--diff", options->diff_dir,
+                  "Write a heat-map PNG per pair into DIR, named like the frame (red to white: failing)")
+      ->type_name("DIR");
+  cmd->add_option("--report", options->report,
+                  "Write one self-contained HTML page: reference, actual and heat map side by side, worst first")
+      ->type_name("FILE.html");
+  cmd->add_flag("--json", options->json, "Print the metrics as JSON on stdout instead of a table");
+  cmd->add_flag("--update", options->update,
+                "After reporting, copy actual over reference for the failing pairs only (accept new renders)");
+  cmd->footer(
+      "Visual regression: compare an actual frame with a reference frame, or two directories\n"
+      "of frames paired by file name (*.png). Images are composited over black; a pixel fails\n"
+      "when its largest channel difference exceeds --threshold, and a pair fails when more\n"
+      "than --max-failing of its pixels fail. Reports failing fraction, max difference, PSNR\n"
+      "and SSIM (as scikit-image's, Gaussian window), worst first.\n"
+      "Exit 0 within tolerance, 1 beyond it or frames missing, 2 on bad input (size mismatch,\n"
+      "unreadable PNG, a file compared with a directory).\n\n"
+      "Examples:\n"
+      "  recoil compare out/frame_0001.png golden/frame_0001.png\n"
+      "  recoil compare out/ golden/ --diff diffs/ --report report.html\n"
+      "  recoil compare out/ golden/ --threshold 0.05 --max-failing 0.01 --json > metrics.json\n"
+      "  recoil compare out/ golden/ --update      # accept the new look of the frames that changed\n"
+      "Missing frames (in REF, not in ACTUAL) fail the comparison; extra frames are listed only.");
+  cmd->callback([options, &global, &action] {
+    action = [options, &global] { return run_compare(*options, global); };
+  });
+}
+
+}  // namespace recoil::cli
