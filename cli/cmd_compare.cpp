@@ -1,9 +1,7 @@
 // `recoil compare ACTUAL REF`: visual regression of frames against references
 // (SPEC.md section 6). Exit 0 within tolerance, 1 beyond it, 2 bad input.
-#include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <functional>
 #include <iostream>
@@ -15,6 +13,7 @@
 #include "cli/compare_io.h"
 #include "cli/compare_pairs.h"
 #include "cli/compare_report.h"
+#include "cli/progress.h"
 #include "core/error.h"
 
 namespace recoil::cli {
@@ -93,33 +92,6 @@ void check_diff_dir(const CompareOptions& options, const PairPlan& plan) {
     }
 }
 
-// Progress on stderr: JSON lines with --log-json; otherwise a bar redrawn in
-// place (at most every 0.2 s) only when stderr is a terminal and not -q.
-std::function<void(size_t, size_t)> progress_reporter(const GlobalOptions& global) {
-  if (global.log_json)
-    return [](size_t done, size_t total) {
-      std::fprintf(stderr, "{\"command\":\"compare\",\"event\":\"progress\",\"done\":%zu,\"total\":%zu}\n", done,
-                   total);
-    };
-  if (global.quiet || !::isatty(STDERR_FILENO)) return {};
-  using Clock = std::chrono::steady_clock;
-  const Clock::time_point start = Clock::now();
-  auto last = std::make_shared<Clock::time_point>(start - std::chrono::seconds(1));
-  return [start, last](size_t done, size_t total) {
-    const Clock::time_point now = Clock::now();
-    if (done < total && now - *last < std::chrono::milliseconds(200)) return;
-    *last = now;
-    const double seconds = std::chrono::duration<double>(now - start).count();
-    const double rate = seconds > 0.0 ? done / seconds : 0.0;
-    const int width = 30, filled = static_cast<int>(width * done / std::max<size_t>(total, 1));
-    const int eta = rate > 0.0 ? static_cast<int>((total - done) / rate + 0.5) : 0;
-    std::fprintf(stderr, "\r[%s%s] %zu/%zu pairs, %.1f/s, ETA %d:%02d ", std::string(filled, '#').c_str(),
-                 std::string(width - filled, '.').c_str(), done, total, rate, eta / 60, eta % 60);
-    if (done == total) std::fprintf(stderr, "\r%*s\r", width + 50, "");
-    std::fflush(stderr);
-  };
-}
-
 int run_compare(const CompareOptions& options, const GlobalOptions& global) {
   const PairPlan plan = plan_pairs(options.actual, options.reference);
   check_diff_dir(options, plan);
@@ -128,7 +100,8 @@ int run_compare(const CompareOptions& options, const GlobalOptions& global) {
   settings.max_failing = options.max_failing;
   settings.diff_dir = options.diff_dir;
   settings.report_images = !options.report.empty();
-  settings.on_progress = progress_reporter(global);
+  Progress progress(global, "compare", static_cast<int>(plan.actual.size()));
+  settings.on_progress = [&progress](size_t done, size_t) { progress.update(static_cast<int>(done)); };
   std::vector<PairResult> results = compare_pairs(plan, settings);
   sort_worst_first(results);
   const bool pass = plan.missing.empty() &&

@@ -23,7 +23,7 @@ void Progress::update(int done) {
   const double rate = elapsed > 0 ? done / elapsed : 0.0;
   const double eta = rate > 0 ? (m_total - done) / rate : 0.0;
   if (m_json) {
-    const nlohmann::json line = {{"event", "progress"}, {"task", m_label}, {"done", done}, {"total", m_total},
+    const nlohmann::json line = {{"command", m_label}, {"event", "progress"}, {"done", done}, {"total", m_total},
                                  {"rate", rate},        {"eta_s", eta}};
     std::fprintf(stderr, "%s\n", line.dump().c_str());
     return;

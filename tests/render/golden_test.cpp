@@ -10,6 +10,7 @@
 #include <iostream>
 #include <string>
 
+#include "render/image_metrics.h"
 #include "render/png.h"
 #include "render/renderer.h"
 #include "tests/render/test_meshes.h"
@@ -17,31 +18,6 @@
 
 namespace recoil::render {
 namespace {
-
-struct Difference {
-  long failing = 0;       // pixels with some channel off by more than the tolerance
-  double fraction = 0.0;  // failing / pixels
-  int worst = 0;          // largest channel difference seen (0-255)
-};
-
-// A pixel fails when any channel (alpha included) differs by more than
-// `tolerance` levels. (render/image_metrics will replace this at integration.)
-Difference compare(const Image& a, const Image& b, int tolerance) {
-  Difference d;
-  if (a.width != b.width || a.height != b.height) {
-    d.failing = std::max<long>(1, static_cast<long>(a.width) * a.height);
-    d.fraction = 1.0;
-    return d;
-  }
-  for (size_t i = 0; i < a.rgba.size(); i += 4) {
-    int pixel_worst = 0;
-    for (size_t c = 0; c < 4; ++c) pixel_worst = std::max(pixel_worst, std::abs(int(a.rgba[i + c]) - int(b.rgba[i + c])));
-    d.worst = std::max(d.worst, pixel_worst);
-    d.failing += pixel_worst > tolerance;
-  }
-  d.fraction = static_cast<double>(d.failing) / (static_cast<double>(a.rgba.size()) / 4.0);
-  return d;
-}
 
 void check_golden(const std::string& name, const Image& actual) {
   const auto golden = recoil::test::source_path("tests/render/golden/" + name + ".png");
@@ -53,13 +29,17 @@ void check_golden(const std::string& name, const Image& actual) {
   }
   ASSERT_TRUE(std::filesystem::exists(golden)) << golden << " is missing; run with RECOIL_UPDATE_GOLDEN=1";
   const Image expected = read_png(golden);
-  const Difference d = compare(actual, expected, 2);
-  std::cout << name << ": " << d.failing << " pixels off by > 2/255 (" << 100.0 * d.fraction
-            << " %), worst channel difference " << d.worst << "\n";
-  if (d.fraction > 0.001) {
+  ASSERT_EQ(actual.width, expected.width) << name;
+  ASSERT_EQ(actual.height, expected.height) << name;
+  // The project's visual-regression metric (recoil compare): a pixel fails
+  // when a channel differs by more than 2/255; at most 0.1 % may fail.
+  const ImageComparison d = compare_images(actual, expected, 2.0 / 255.0);
+  std::cout << name << ": " << d.failing_pixels << " pixels off by > 2/255 (" << 100.0 * d.failing_fraction
+            << " %), max difference " << d.max_difference << ", SSIM " << d.ssim << "\n";
+  if (d.failing_fraction > 0.001) {
     const auto dir = recoil::test::scratch_dir("golden_" + name);
     write_png(dir / (name + ".png"), actual);
-    ADD_FAILURE() << name << ": " << 100.0 * d.fraction << " % of pixels differ (limit 0.1 %); actual image in "
+    ADD_FAILURE() << name << ": " << 100.0 * d.failing_fraction << " % of pixels differ (limit 0.1 %); actual image in "
                   << (dir / (name + ".png"));
   }
 }
