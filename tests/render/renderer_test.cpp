@@ -231,5 +231,15 @@ TEST(Renderer, RejectsBadSettings) {
   }
 }
 
+TEST(Renderer, RejectsADegenerateCamera) {
+  Renderer renderer(small(0));
+  Camera camera = front_camera();
+  camera.target = camera.eye;
+  EXPECT_THROW(renderer.render(RenderScene{}, camera), Error);
+  camera = front_camera();
+  camera.fov_y_degrees = 180.0;
+  EXPECT_THROW(renderer.render(RenderScene{}, camera), Error);
+}
+
 }  // namespace
 }  // namespace recoil::render
