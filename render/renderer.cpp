@@ -23,7 +23,13 @@
 namespace recoil::render {
 namespace {
 
-constexpr int kShadowMapSize = 2048;
+// Shadow-map side: about one texel per output pixel across the subject,
+// a power of two between 512 and 2048 (2048 for 720p and 1080p).
+int shadow_map_size(const RenderSettings& s) {
+  int size = 512;
+  while (size < std::max(s.width, s.height) && size < 2048) size *= 2;
+  return size;
+}
 constexpr GLenum kShadowUnit = GL_TEXTURE0;
 constexpr float kOpaque = 0.999f;  // opacity at or above this draws in the opaque pass
 
@@ -121,7 +127,7 @@ struct Renderer::Impl {
 
   explicit Impl(const RenderSettings& s)
       : target(s.width, s.height, s.msaa),
-        shadow_map(kShadowMapSize),
+        shadow_map(shadow_map_size(s)),
         mesh_programs{ShaderProgram("mesh", shaders::mesh_vertex(), shaders::mesh_fragment(false)),
                       ShaderProgram("mesh+shadow", shaders::mesh_vertex(), shaders::mesh_fragment(true))},
         ground_programs{

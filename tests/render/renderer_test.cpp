@@ -231,6 +231,45 @@ TEST(Renderer, RejectsBadSettings) {
   }
 }
 
+TEST(Renderer, KeyLightCastsAShadowOnTheFloor) {
+  RenderScene scene;
+  scene.grid = false;
+  scene.meshes = {test::make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.8f, 0.8f, 0.8f})};
+  Camera camera;
+  camera.eye = {0.0, 6.0, 0.01};  // looking down: the whole shadow is in view
+  camera.target = {0.0, 0.0, 0.0};
+  const Image lit = Renderer(small(4, false)).render(scene, camera);
+  const Image shadowed = Renderer(small(4, true)).render(scene, camera);
+  int darker = 0, brighter = 0;
+  for (size_t i = 0; i < lit.rgba.size(); i += 4) {
+    darker += shadowed.rgba[i + 1] + 20 < lit.rgba[i + 1];
+    brighter += shadowed.rgba[i + 1] > lit.rgba[i + 1] + 2;
+  }
+  std::cout << "floor pixels darkened by the shadow: " << darker << " of " << lit.rgba.size() / 4 << "\n";
+  EXPECT_GT(darker, 150);  // the box's shadow covers a few hundred pixels here
+  EXPECT_EQ(brighter, 0);  // a shadow never adds light
+}
+
+TEST(Renderer, FloorFollowsGroundHeightAndToggles) {
+  const RenderSettings settings = small(0);
+  Renderer renderer(settings);
+  RenderScene scene;
+  scene.meshes = {test::make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.8f, 0.8f, 0.8f})};
+  const Camera camera = studio_camera(settings);
+  const Image base = renderer.render(scene, camera);
+  scene.ground_height = -0.5f;
+  const Image lowered = renderer.render(scene, camera);
+  scene.grid = false;
+  const Image no_grid = renderer.render(scene, camera);
+  scene.ground = false;
+  const Image no_floor = renderer.render(scene, camera);
+  EXPECT_NE(base.rgba, lowered.rgba);
+  EXPECT_NE(lowered.rgba, no_grid.rgba);
+  // Without a floor the bottom corner shows the background.
+  EXPECT_EQ(at(no_floor, 0, 63), (std::array<int, 4>{0x1d, 0x21, 0x27, 255}));
+  EXPECT_NE(at(base, 0, 63), (std::array<int, 4>{0x1d, 0x21, 0x27, 255}));
+}
+
 TEST(Renderer, RejectsADegenerateCamera) {
   Renderer renderer(small(0));
   Camera camera = front_camera();
