@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 #include <numeric>
 #include <string>
@@ -88,6 +89,12 @@ void set(ShaderProgram& p, const char* name, const Eigen::Matrix4f& m) {
 }
 void set(ShaderProgram& p, const char* name, float v) { glUniform1f(p.location(name), v); }
 void set(ShaderProgram& p, const char* name, int v) { glUniform1i(p.location(name), v); }
+
+std::string hex(unsigned value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%04x", value);
+  return text;
+}
 
 void set_culling(bool cull) {
   if (cull) {
@@ -379,6 +386,12 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   target.read(image);
   if (settings.transparent_background) unpremultiply_srgb(image);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  // Our calls are valid by construction, so an error here is the driver
+  // running out of memory (or a bug): either way the frame is not trustworthy.
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    throw Error(ErrorKind::internal, "OpenGL error 0x" + hex(error) + " while rendering a frame of " +
+                                         std::to_string(scene.meshes.size()) + " meshes");
+  }
 }
 
 }  // namespace recoil::render

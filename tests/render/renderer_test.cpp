@@ -131,6 +131,26 @@ TEST(Renderer, TransparentBackgroundHasZeroAlphaWhereNothingIsDrawn) {
   EXPECT_GT(fading, 20);
 }
 
+TEST(Renderer, TransparentBackgroundStoresStraightAlpha) {
+  // A half-transparent body over nothing keeps its lit colour; only alpha drops.
+  RenderSettings settings = small(0);
+  settings.transparent_background = true;
+  Renderer renderer(settings);
+  RenderScene scene;
+  scene.ground = false;
+  RenderMesh mesh = facing_triangle({0.9f, 0.5f, 0.1f});
+  scene.meshes = {mesh};
+  const auto opaque = at(renderer.render(scene, front_camera()), 48, 32);
+  mesh.opacity = 0.5f;
+  scene.meshes = {mesh};
+  const auto half = at(renderer.render(scene, front_camera()), 48, 32);
+  std::cout << "opaque " << opaque[0] << " " << opaque[1] << " " << opaque[2] << " " << opaque[3] << ", half "
+            << half[0] << " " << half[1] << " " << half[2] << " " << half[3] << "\n";
+  EXPECT_EQ(opaque[3], 255);
+  EXPECT_NEAR(half[3], 128, 1);
+  for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(half[c], opaque[c], 3) << "channel " << c;
+}
+
 TEST(Renderer, EveryMsaaLevelRendersAndSmoothsEdges) {
   RenderScene scene;
   scene.ground = false;
