@@ -346,7 +346,7 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
+  glDepthFunc(GL_LESS);  // a back face on a silhouette must not replace the front face it meets
   glDepthMask(GL_TRUE);
   if (frame.shadows) shadow_pass(scene, frame);
 
