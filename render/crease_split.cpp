@@ -71,9 +71,13 @@ CreaseSplit split_creases(std::span<const float> positions, std::span<const std:
   // degenerate face (zero normal) is smooth with its neighbours.
   const float cos_crease = static_cast<float>(std::cos(crease_degrees * std::numbers::pi / 180.0));
   Corners corners(indices.size() - indices.size() % 3);
+  // Whether a face runs along its edge from the min to the max vertex.
+  auto forward = [](const EdgeUse& use) { return use.corner_hi == 3 * (use.corner_lo / 3) + (use.corner_lo % 3 + 1) % 3; };
+  bool closed = faces > 0 && uses.size() == 3 * faces;  // no degenerate edges
   for (size_t i = 0; i < uses.size();) {
     size_t j = i;
     while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+    closed = closed && j - i == 2 && forward(uses[i]) != forward(uses[i + 1]);
     if (j - i == 2) {
       const Eigen::Vector3f& n1 = normal[uses[i].corner_lo / 3];
       const Eigen::Vector3f& n2 = normal[uses[i + 1].corner_lo / 3];
@@ -91,6 +95,7 @@ CreaseSplit split_creases(std::span<const float> positions, std::span<const std:
   // unsplit mesh maps onto itself.
   const size_t vertex_count = positions.size() / 3;
   CreaseSplit split;
+  split.closed = closed;
   split.source.resize(vertex_count);
   std::iota(split.source.begin(), split.source.end(), 0u);
   std::vector<std::uint32_t> first_root(vertex_count, UINT32_MAX);

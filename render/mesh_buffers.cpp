@@ -3,7 +3,6 @@
 #include <algorithm>
 
 #include "core/check.h"
-#include "render/mesh_topology.h"
 #include "render/vertex_normals.h"
 
 namespace recoil::render {
@@ -30,8 +29,6 @@ void MeshBuffers::set_topology(const RenderMesh& mesh) {
   RECOIL_CHECK(worst == mesh.indices.end() || *worst < vertex_count,
                "index " << *worst << " >= vertex count " << vertex_count);
   m_indices = mesh.indices;
-  // Closedness is a property of the input surface; the split below opens it.
-  m_closed = is_closed_oriented(m_indices);
   m_split = split_creases(mesh.positions, mesh.indices, kCreaseDegrees);
   glBindVertexArray(m_vertex_array.get());
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m_split.indices.size() * sizeof(std::uint32_t)),

@@ -27,8 +27,8 @@ class MeshBuffers {
   // Binds the vertex array and draws all triangles (indexed).
   void draw() const;
   std::size_t triangle_count() const { return m_indices.size() / 3; }
-  // Closed and consistently oriented (see mesh_topology.h): back faces may be culled.
-  bool closed() const { return m_closed; }
+  // Closed and consistently oriented (see crease_split.h): back faces may be culled.
+  bool closed() const { return m_split.closed; }
 
  private:
   void set_topology(const RenderMesh& mesh);
@@ -43,7 +43,6 @@ class MeshBuffers {
   CreaseSplit m_split;                   // render vertices and the indices drawn
   std::vector<float> m_split_positions;  // scratch: positions gathered per render vertex
   std::vector<float> m_normal_data;      // scratch, reused every frame
-  bool m_closed = false;
 };
 
 }  // namespace recoil::render

@@ -48,6 +48,30 @@ TEST(CreaseSplit, SmoothSurfacesAreLeftAlone) {
   EXPECT_FALSE(split_creases(sphere.positions, sphere.indices, 5.0).identity);
 }
 
+TEST(CreaseSplit, RecognisesClosedOrientedMeshes) {
+  auto closed = [](const std::vector<std::uint32_t>& indices, const std::vector<float>& positions) {
+    return split_creases(positions, indices, 40.0).closed;
+  };
+  const RenderMesh sphere = test::make_icosphere({0, 0, 0}, 1.0f, 1, {1, 1, 1});
+  const RenderMesh torus = test::make_torus({0, 0, 0}, 1.0f, 0.3f, 12, 8, {1, 1, 1});
+  const RenderMesh box = test::make_box({0, 0, 0}, {1, 1, 1}, {1, 1, 1});
+  EXPECT_TRUE(closed(sphere.indices, sphere.positions));
+  EXPECT_TRUE(closed(torus.indices, torus.positions));
+  EXPECT_TRUE(closed(weld(box).indices, weld(box).positions));
+  // Split faces leave every edge a border.
+  EXPECT_FALSE(closed(box.indices, box.positions));
+  std::vector<std::uint32_t> flipped = sphere.indices;
+  std::swap(flipped[0], flipped[1]);
+  EXPECT_FALSE(closed(flipped, sphere.positions));
+  std::vector<std::uint32_t> holed(sphere.indices.begin(), sphere.indices.end() - 3);
+  EXPECT_FALSE(closed(holed, sphere.positions));
+  // Two copies on the same vertices: every edge used four times.
+  std::vector<std::uint32_t> doubled = sphere.indices;
+  doubled.insert(doubled.end(), sphere.indices.begin(), sphere.indices.end());
+  EXPECT_FALSE(closed(doubled, sphere.positions));
+  EXPECT_FALSE(closed({}, sphere.positions));
+}
+
 TEST(CreaseSplit, SharedVertexBoxRendersLikeSplitBox) {
   // Smooth normals would round a welded box off; the split keeps it flat
   // shaded, so it renders exactly like the box built with split faces.
