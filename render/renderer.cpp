@@ -5,7 +5,6 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -31,6 +30,7 @@ int shadow_map_size(const RenderSettings& s) {
   while (size < std::max(s.width, s.height) && size < 2048) size *= 2;
   return size;
 }
+
 constexpr GLenum kShadowUnit = GL_TEXTURE0;
 constexpr float kOpaque = 0.999f;  // opacity at or above this draws in the opaque pass
 
