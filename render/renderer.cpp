@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdio>
 #include <limits>
-#include <numeric>
 #include <string>
 #include <vector>
 
@@ -23,7 +23,14 @@
 namespace recoil::render {
 namespace {
 
-constexpr int kShadowMapSize = 2048;
+// Shadow-map side: about one texel per output pixel across the subject,
+// a power of two between 512 and 2048 (2048 for 720p and 1080p).
+int shadow_map_size(const RenderSettings& s) {
+  int size = 512;
+  while (size < std::max(s.width, s.height) && size < 2048) size *= 2;
+  return size;
+}
+
 constexpr GLenum kShadowUnit = GL_TEXTURE0;
 constexpr float kOpaque = 0.999f;  // opacity at or above this draws in the opaque pass
 
@@ -56,6 +63,15 @@ Bounds bounds_of(const std::vector<float>& positions) {
   return b;
 }
 
+void validate(const Camera& c) {
+  if (!c.eye.allFinite() || !c.target.allFinite() || !c.up.allFinite() || (c.eye - c.target).norm() < 1e-9) {
+    throw bad_input("camera position and target must be finite and distinct");
+  }
+  if (!(c.fov_y_degrees > 0.0 && c.fov_y_degrees < 180.0)) {
+    throw bad_input("camera fov must be between 0 and 180 degrees, not " + std::to_string(c.fov_y_degrees));
+  }
+}
+
 void validate(const RenderSettings& s) {
   if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) {
     throw bad_input("render resolution " + std::to_string(s.width) + "x" + std::to_string(s.height) +
@@ -74,6 +90,12 @@ void set(ShaderProgram& p, const char* name, const Eigen::Matrix4f& m) {
 void set(ShaderProgram& p, const char* name, float v) { glUniform1f(p.location(name), v); }
 void set(ShaderProgram& p, const char* name, int v) { glUniform1i(p.location(name), v); }
 
+std::string hex(unsigned value) {
+  char text[16];
+  std::snprintf(text, sizeof text, "%04x", value);
+  return text;
+}
+
 void set_culling(bool cull) {
   if (cull) {
     glEnable(GL_CULL_FACE);
@@ -83,6 +105,17 @@ void set_culling(bool cull) {
 }
 
 }  // namespace
+
+// What one frame needs besides the scene: derived once, used by every pass.
+struct Frame {
+  Eigen::Vector3d center;  // of the visible meshes' bounding box (metres)
+  double radius = 1.0;     // half its diagonal
+  bool shadows = false;
+  StudioLights lights;
+  GroundLayout ground;
+  Eigen::Matrix4f view_projection;  // world to clip, 4 by 4
+  std::array<float, 3> background;  // linear
+};
 
 struct Renderer::Impl {
   // Declared first so it is destroyed last, after every GL object.
@@ -101,19 +134,27 @@ struct Renderer::Impl {
 
   explicit Impl(const RenderSettings& s)
       : target(s.width, s.height, s.msaa),
-        shadow_map(kShadowMapSize),
+        shadow_map(shadow_map_size(s)),
         mesh_programs{ShaderProgram("mesh", shaders::mesh_vertex(), shaders::mesh_fragment(false)),
                       ShaderProgram("mesh+shadow", shaders::mesh_vertex(), shaders::mesh_fragment(true))},
-        ground_programs{ShaderProgram("ground", shaders::ground_vertex(), shaders::ground_fragment(false, false)),
-                        ShaderProgram("ground+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, false)),
-                        ShaderProgram("ground+grid", shaders::ground_vertex(), shaders::ground_fragment(false, true)),
-                        ShaderProgram("ground+grid+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, true))},
+        ground_programs{
+            ShaderProgram("ground", shaders::ground_vertex(), shaders::ground_fragment(false, false)),
+            ShaderProgram("ground+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, false)),
+            ShaderProgram("ground+grid", shaders::ground_vertex(), shaders::ground_fragment(false, true)),
+            ShaderProgram("ground+grid+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, true))},
         depth_program("depth", shaders::depth_vertex(), shaders::depth_fragment()),
         wire_program("wireframe", shaders::mesh_vertex(), shaders::flat_fragment()) {}
 
   void draw(const RenderSettings& settings, const RenderScene& scene, const Camera& camera, Image& image);
-  void set_lighting(ShaderProgram& p, const StudioLights& lights, const Camera& camera,
-                    const Eigen::Matrix4f& view_projection);
+  Frame upload(const RenderSettings& settings, const RenderScene& scene, const Camera& camera);
+  void shadow_pass(const RenderScene& scene, const Frame& frame);
+  void set_common(ShaderProgram& p, const Frame& frame);
+  void set_lighting(ShaderProgram& p, const Frame& frame, const Camera& camera);
+  void draw_mesh(const RenderSettings& settings, const RenderMesh& mesh, const MeshBuffers& buffers,
+                 ShaderProgram& program);
+  void draw_ground(const RenderSettings& settings, const RenderScene& scene, const Frame& frame);
+  void draw_transparent(const RenderSettings& settings, const RenderScene& scene, const Camera& camera,
+                        ShaderProgram& program);
 };
 
 Renderer::Renderer(const RenderSettings& settings) : m_settings(settings) {
@@ -132,16 +173,83 @@ Image Renderer::render(const RenderScene& scene, const Camera& camera) {
 }
 
 void Renderer::render(const RenderScene& scene, const Camera& camera, Image& image) {
+  validate(camera);
   m_impl->context.make_current();
   m_impl->draw(m_settings, scene, camera, image);
 }
 
-void Renderer::Impl::set_lighting(ShaderProgram& p, const StudioLights& lights, const Camera& camera,
-                                  const Eigen::Matrix4f& view_projection) {
+Frame Renderer::Impl::upload(const RenderSettings& settings, const RenderScene& scene, const Camera& camera) {
+  // Every mesh is re-sent (new positions and normals each frame); the
+  // bounds of the visible ones frame the shadow map, floor and depth range.
+  meshes.resize(scene.meshes.size());
+  mesh_bounds.resize(scene.meshes.size());
+  Bounds scene_bounds;
+  for (size_t i = 0; i < scene.meshes.size(); ++i) {
+    meshes[i].upload(scene.meshes[i]);
+    mesh_bounds[i] = bounds_of(scene.meshes[i].positions);
+    if (scene.meshes[i].opacity > 0.0f && !scene.meshes[i].indices.empty()) scene_bounds.add(mesh_bounds[i]);
+  }
+  Frame frame;
+  frame.center = camera.target;
+  const double size = (scene_bounds.hi - scene_bounds.lo).norm();
+  const bool has_meshes = !scene_bounds.empty() && std::isfinite(size);
+  if (has_meshes) {
+    frame.center = 0.5 * (scene_bounds.lo + scene_bounds.hi);
+    frame.radius = std::max(0.5 * size, 1e-3);
+  }
+  frame.shadows = settings.shadows && has_meshes;
+  frame.lights = studio_lights(camera);
+  frame.ground = ground_layout(frame.center.x(), frame.center.z(), frame.radius, scene.ground_height);
+  frame.background = srgb_to_linear(settings.background);
+
+  const Eigen::Vector3d reach = Eigen::Vector3d::Constant(frame.radius);
+  Bounds visible{frame.center - reach, frame.center + reach};
+  if (scene.ground) {
+    const GroundLayout& g = frame.ground;
+    visible.add({Eigen::Vector3d(g.center_x - g.fade_end, g.height, g.center_z - g.fade_end),
+                 Eigen::Vector3d(g.center_x + g.fade_end, g.height, g.center_z + g.fade_end)});
+  }
+  const DepthRange range = depth_range(camera, visible.lo, visible.hi);
+  const double aspect = static_cast<double>(settings.width) / settings.height;
+  frame.view_projection =
+      (camera.projection_matrix(aspect, range.near_plane, range.far_plane) * camera.view_matrix()).cast<float>();
+  return frame;
+}
+
+void Renderer::Impl::shadow_pass(const RenderScene& scene, const Frame& frame) {
+  // Every visible mesh casts; the floor only receives.
+  const Eigen::Matrix4f light_clip = shadow_map.begin(frame.center, frame.radius, frame.lights.key.to_light);
+  glClear(GL_DEPTH_BUFFER_BIT);
+  // Slope-scaled offset keeps lit surfaces from shadowing themselves (acne).
+  glEnable(GL_POLYGON_OFFSET_FILL);
+  glPolygonOffset(2.0f, 2.0f);
+  depth_program.use();
+  set(depth_program, "u_view_projection", light_clip);
+  glCullFace(GL_BACK);
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    if (scene.meshes[i].opacity <= 0.0f) continue;
+    // A closed mesh's faces turned from the light are hidden by its lit side.
+    set_culling(meshes[i].closed());
+    meshes[i].draw();
+  }
+  set_culling(false);
+  glDisable(GL_POLYGON_OFFSET_FILL);
+}
+
+void Renderer::Impl::set_common(ShaderProgram& p, const Frame& frame) {
   p.use();
-  set(p, "u_view_projection", view_projection);
+  set(p, "u_view_projection", frame.view_projection);
   set(p, "u_light_matrix", shadow_map.texture_matrix());
+  // Receivers look up the map 1.5 texels off their surface, against acne.
   set(p, "u_normal_offset", static_cast<float>(1.5 * shadow_map.texel_world()));
+  set(p, "u_shadow_map", static_cast<int>(kShadowUnit - GL_TEXTURE0));
+  const float texel = 1.0f / static_cast<float>(shadow_map.size());
+  glUniform2f(p.location("u_shadow_texel"), texel, texel);
+}
+
+void Renderer::Impl::set_lighting(ShaderProgram& p, const Frame& frame, const Camera& camera) {
+  set_common(p, frame);
+  const StudioLights& lights = frame.lights;
   set(p, "u_eye", camera.eye);
   set(p, "u_key_dir", lights.key.to_light);
   set(p, "u_fill_dir", lights.fill.to_light);
@@ -151,112 +259,111 @@ void Renderer::Impl::set_lighting(ShaderProgram& p, const StudioLights& lights, 
   set(p, "u_rim_color", lights.rim.color);
   set(p, "u_sky_ambient", lights.sky_ambient);
   set(p, "u_ground_ambient", lights.ground_ambient);
-  set(p, "u_shadow_map", 0);
-  const float texel = 1.0f / static_cast<float>(shadow_map.size());
-  glUniform2f(p.location("u_shadow_texel"), texel, texel);
+}
+
+void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh& mesh, const MeshBuffers& buffers,
+                               ShaderProgram& program) {
+  const std::array<float, 3> albedo = srgb_to_linear(mesh.color);
+  const float opacity = std::clamp(mesh.opacity, 0.0f, 1.0f);
+  if (settings.wireframe) {
+    // Push the faces back so the edges drawn next win the depth test.
+    glEnable(GL_POLYGON_OFFSET_FILL);
+    glPolygonOffset(1.0f, 1.0f);
+  }
+  program.use();
+  set(program, "u_albedo", Eigen::Vector3f(albedo[0], albedo[1], albedo[2]));
+  set(program, "u_opacity", opacity);
+  buffers.draw();
+  if (settings.wireframe) {
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    wire_program.use();
+    // Edges in a fifth of the body's colour, premultiplied like the faces.
+    glUniform4f(wire_program.location("u_color"), 0.2f * albedo[0] * opacity, 0.2f * albedo[1] * opacity,
+                0.2f * albedo[2] * opacity, opacity);
+    glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
+    buffers.draw();
+    glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
+  }
+}
+
+void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
+  ShaderProgram& p = ground_programs[(frame.shadows ? 1 : 0) + (scene.grid ? 2 : 0)];
+  set_common(p, frame);
+  // The floor is flat and the lights directional, so its lighting is two
+  // constants: the key's share (shadowed per pixel) and the rest.
+  const StudioLights& lights = frame.lights;
+  const Eigen::Vector3f key_light = lights.key.color * static_cast<float>(std::max(lights.key.to_light.y(), 0.0));
+  const Eigen::Vector3f other_light =
+      lights.fill.color * static_cast<float>(std::max(lights.fill.to_light.y(), 0.0)) + lights.sky_ambient;
+  set(p, "u_key_light", key_light);
+  set(p, "u_other_light", other_light);
+  set(p, "u_albedo", Eigen::Vector3f(0.15f, 0.155f, 0.16f));
+  set(p, "u_line_albedo", Eigen::Vector3f(0.26f, 0.27f, 0.28f));
+  const GroundLayout& g = frame.ground;
+  glUniform2f(p.location("u_center"), static_cast<float>(g.center_x), static_cast<float>(g.center_z));
+  glUniform2f(p.location("u_fade"), static_cast<float>(g.fade_start), static_cast<float>(g.fade_end));
+  set(p, "u_spacing", static_cast<float>(g.grid_spacing));
+  if (settings.transparent_background) {
+    glUniform4f(p.location("u_background"), 0.0f, 0.0f, 0.0f, 0.0f);
+  } else {
+    glUniform4f(p.location("u_background"), frame.background[0], frame.background[1], frame.background[2], 1.0f);
+  }
+  ground.draw(g);
+}
+
+void Renderer::Impl::draw_transparent(const RenderSettings& settings, const RenderScene& scene,
+                                      const Camera& camera, ShaderProgram& program) {
+  // Farthest first (by bounding-box centre depth, ties by index), without
+  // depth writes; each mesh draws its back faces, then its front faces,
+  // which orders a convex body's own layers correctly.
+  const Eigen::Vector3d forward = (camera.target - camera.eye).normalized();
+  transparent_order.clear();
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    if (scene.meshes[i].opacity > 0.0f && scene.meshes[i].opacity < kOpaque) transparent_order.push_back(i);
+  }
+  if (transparent_order.empty()) return;
+  auto depth_of = [&](size_t i) { return (0.5 * (mesh_bounds[i].lo + mesh_bounds[i].hi) - camera.eye).dot(forward); };
+  std::stable_sort(transparent_order.begin(), transparent_order.end(),
+                   [&](size_t a, size_t b) { return depth_of(a) > depth_of(b); });
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied colour
+  glDepthMask(GL_FALSE);
+  glEnable(GL_CULL_FACE);
+  for (size_t i : transparent_order) {
+    glCullFace(GL_FRONT);
+    draw_mesh(settings, scene.meshes[i], meshes[i], program);
+    glCullFace(GL_BACK);
+    draw_mesh(settings, scene.meshes[i], meshes[i], program);
+  }
+  glDisable(GL_CULL_FACE);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
 }
 
 void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& scene, const Camera& camera,
                           Image& image) {
-  // Upload every mesh (new normals each frame) and gather the scene bounds.
-  while (meshes.size() < scene.meshes.size()) meshes.emplace_back();
-  meshes.resize(scene.meshes.size());
-  mesh_bounds.resize(scene.meshes.size());
-  Bounds scene_bounds;
-  for (size_t i = 0; i < scene.meshes.size(); ++i) {
-    meshes[i].upload(scene.meshes[i]);
-    mesh_bounds[i] = bounds_of(scene.meshes[i].positions);
-    if (scene.meshes[i].opacity > 0.0f && !scene.meshes[i].indices.empty()) scene_bounds.add(mesh_bounds[i]);
-  }
-  Eigen::Vector3d center = camera.target;
-  double radius = 1.0;
-  if (!scene_bounds.empty()) {
-    center = 0.5 * (scene_bounds.lo + scene_bounds.hi);
-    radius = std::max(0.5 * (scene_bounds.hi - scene_bounds.lo).norm(), 1e-3);
-  }
-
-  const StudioLights lights = studio_lights(camera);
-  const GroundLayout layout = ground_layout(center.x(), center.z(), radius, scene.ground_height);
-  Bounds visible = scene_bounds;
-  if (visible.empty()) {
-    visible = {center - Eigen::Vector3d::Constant(radius), center + Eigen::Vector3d::Constant(radius)};
-  }
-  if (scene.ground) {
-    visible.add({Eigen::Vector3d(layout.center_x - layout.fade_end, layout.height, layout.center_z - layout.fade_end),
-                 Eigen::Vector3d(layout.center_x + layout.fade_end, layout.height, layout.center_z + layout.fade_end)});
-  }
-  const DepthRange range = depth_range(camera, visible.lo, visible.hi);
-  const double aspect = static_cast<double>(settings.width) / settings.height;
-  const Eigen::Matrix4f view_projection =
-      (camera.projection_matrix(aspect, range.near_plane, range.far_plane) * camera.view_matrix()).cast<float>();
-
+  const Frame frame = upload(settings, scene, camera);
   glDisable(GL_BLEND);
   glDisable(GL_CULL_FACE);
   glEnable(GL_DEPTH_TEST);
-  glDepthFunc(GL_LEQUAL);
+  glDepthFunc(GL_LESS);  // a back face on a silhouette must not replace the front face it meets
   glDepthMask(GL_TRUE);
+  if (frame.shadows) shadow_pass(scene, frame);
 
-  // Shadow pass: every visible mesh casts; the floor only receives.
-  const bool shadows = settings.shadows && !scene_bounds.empty();
-  if (shadows) {
-    const Eigen::Matrix4f light_clip = shadow_map.begin(center, radius, lights.key.to_light);
-    glClear(GL_DEPTH_BUFFER_BIT);
-    // Slope-scaled offset keeps lit surfaces from shadowing themselves (acne).
-    glEnable(GL_POLYGON_OFFSET_FILL);
-    glPolygonOffset(2.0f, 2.0f);
-    depth_program.use();
-    set(depth_program, "u_view_projection", light_clip);
-    glCullFace(GL_BACK);
-    for (size_t i = 0; i < meshes.size(); ++i) {
-      if (scene.meshes[i].opacity <= 0.0f) continue;
-      // A closed mesh's faces turned from the light are hidden by its lit side.
-      set_culling(meshes[i].closed());
-      meshes[i].draw();
-    }
-    set_culling(false);
-    glDisable(GL_POLYGON_OFFSET_FILL);
-  }
-
-  // Main pass.
   target.bind_for_drawing();
-  glEnable(GL_FRAMEBUFFER_SRGB);
-  const std::array<float, 3> background = srgb_to_linear(settings.background);
+  glEnable(GL_FRAMEBUFFER_SRGB);  // linear in the shaders, sRGB bytes in memory
   if (settings.transparent_background) {
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   } else {
-    glClearColor(background[0], background[1], background[2], 1.0f);
+    glClearColor(frame.background[0], frame.background[1], frame.background[2], 1.0f);
   }
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   shadow_map.bind_texture(kShadowUnit);
-
-  ShaderProgram& mesh_program = mesh_programs[shadows ? 1 : 0];
-  set_lighting(mesh_program, lights, camera, view_projection);
-  auto draw_mesh = [&](size_t i) {
-    const RenderMesh& mesh = scene.meshes[i];
-    const std::array<float, 3> albedo = srgb_to_linear(mesh.color);
-    if (settings.wireframe) {
-      // Push the faces back so the edges drawn next win the depth test.
-      glEnable(GL_POLYGON_OFFSET_FILL);
-      glPolygonOffset(1.0f, 1.0f);
-    }
-    mesh_program.use();
-    set(mesh_program, "u_albedo", Eigen::Vector3f(albedo[0], albedo[1], albedo[2]));
-    set(mesh_program, "u_opacity", std::clamp(mesh.opacity, 0.0f, 1.0f));
-    meshes[i].draw();
-    if (settings.wireframe) {
-      glDisable(GL_POLYGON_OFFSET_FILL);
-      const float a = std::clamp(mesh.opacity, 0.0f, 1.0f);
-      wire_program.use();
-      glUniform4f(wire_program.location("u_color"), 0.2f * albedo[0] * a, 0.2f * albedo[1] * a,
-                  0.2f * albedo[2] * a, a);
-      glPolygonMode(GL_FRONT_AND_BACK, GL_LINE);
-      meshes[i].draw();
-      glPolygonMode(GL_FRONT_AND_BACK, GL_FILL);
-    }
-  };
+  ShaderProgram& mesh_program = mesh_programs[frame.shadows ? 1 : 0];
+  set_lighting(mesh_program, frame, camera);
   if (settings.wireframe) {
     wire_program.use();
-    set(wire_program, "u_view_projection", view_projection);
+    set(wire_program, "u_view_projection", frame.view_projection);
   }
 
   // Opaque meshes first, with no blending; closed ones without their back
@@ -265,74 +372,26 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   for (size_t i = 0; i < meshes.size(); ++i) {
     if (scene.meshes[i].opacity < kOpaque) continue;
     set_culling(meshes[i].closed());
-    draw_mesh(i);
+    draw_mesh(settings, scene.meshes[i], meshes[i], mesh_program);
   }
   set_culling(false);
+
   // The floor, its rim fading into the background colour. It is drawn after
   // the opaque meshes so that early depth testing skips the pixels they cover;
   // it does not blend, so anything below the floor stays hidden even where
   // the floor has faded out.
-  if (scene.ground) {
-    ShaderProgram& p = ground_programs[(shadows ? 1 : 0) + (scene.grid ? 2 : 0)];
-    p.use();
-    set(p, "u_view_projection", view_projection);
-    set(p, "u_light_matrix", shadow_map.texture_matrix());
-    set(p, "u_normal_offset", static_cast<float>(1.5 * shadow_map.texel_world()));
-    set(p, "u_shadow_map", 0);
-    const float texel = 1.0f / static_cast<float>(shadow_map.size());
-    glUniform2f(p.location("u_shadow_texel"), texel, texel);
-    // The floor is flat and the lights directional, so its lighting is two
-    // constants: the key's share (shadowed per pixel) and the rest.
-    const Eigen::Vector3f key_light = lights.key.color * static_cast<float>(std::max(lights.key.to_light.y(), 0.0));
-    const Eigen::Vector3f other_light =
-        lights.fill.color * static_cast<float>(std::max(lights.fill.to_light.y(), 0.0)) + lights.sky_ambient;
-    set(p, "u_key_light", key_light);
-    set(p, "u_other_light", other_light);
-    set(p, "u_albedo", Eigen::Vector3f(0.15f, 0.155f, 0.16f));
-    set(p, "u_line_albedo", Eigen::Vector3f(0.26f, 0.27f, 0.28f));
-    glUniform2f(p.location("u_center"), static_cast<float>(layout.center_x), static_cast<float>(layout.center_z));
-    glUniform2f(p.location("u_fade"), static_cast<float>(layout.fade_start), static_cast<float>(layout.fade_end));
-    set(p, "u_spacing", static_cast<float>(layout.grid_spacing));
-    if (settings.transparent_background) {
-      glUniform4f(p.location("u_background"), 0.0f, 0.0f, 0.0f, 0.0f);
-    } else {
-      glUniform4f(p.location("u_background"), background[0], background[1], background[2], 1.0f);
-    }
-    ground.draw(layout);
-  }
-
-  // Transparent meshes, farthest first (by bounding-box centre depth, ties by
-  // index), without depth writes; each draws its back faces, then its front
-  // faces, which orders a convex body's own layers correctly.
-  const Eigen::Vector3d forward = (camera.target - camera.eye).normalized();
-  transparent_order.clear();
-  for (size_t i = 0; i < meshes.size(); ++i) {
-    if (scene.meshes[i].opacity > 0.0f && scene.meshes[i].opacity < kOpaque) transparent_order.push_back(i);
-  }
-  auto depth_of = [&](size_t i) {
-    return (0.5 * (mesh_bounds[i].lo + mesh_bounds[i].hi) - camera.eye).dot(forward);
-  };
-  std::stable_sort(transparent_order.begin(), transparent_order.end(),
-                   [&](size_t a, size_t b) { return depth_of(a) > depth_of(b); });
-  if (!transparent_order.empty()) {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-    glDepthMask(GL_FALSE);
-    glEnable(GL_CULL_FACE);
-    for (size_t i : transparent_order) {
-      glCullFace(GL_FRONT);
-      draw_mesh(i);
-      glCullFace(GL_BACK);
-      draw_mesh(i);
-    }
-    glDisable(GL_CULL_FACE);
-    glDepthMask(GL_TRUE);
-    glDisable(GL_BLEND);
-  }
+  if (scene.ground) draw_ground(settings, scene, frame);
+  draw_transparent(settings, scene, camera, mesh_program);
 
   target.read(image);
   if (settings.transparent_background) unpremultiply_srgb(image);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
+  // Our calls are valid by construction, so an error here is the driver
+  // running out of memory (or a bug): either way the frame is not trustworthy.
+  if (const GLenum error = glGetError(); error != GL_NO_ERROR) {
+    throw Error(ErrorKind::internal, "OpenGL error 0x" + hex(error) + " while rendering a frame of " +
+                                         std::to_string(scene.meshes.size()) + " meshes");
+  }
 }
 
 }  // namespace recoil::render

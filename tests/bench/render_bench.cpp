@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "render/crease_split.h"
 #include "render/renderer.h"
 #include "render/vertex_normals.h"
 #include "tests/bench/bench.h"
@@ -67,11 +68,13 @@ void bench_render() {
   }
   table.print();
 
-  BenchTable parts("Render parts, CPU side", {"part", "triangles", "ms"});
+  BenchTable parts("Render parts, CPU side (single thread)", {"part", "triangles", "ms"});
   for (const Subject& subject : subjects) {
     std::vector<float> normals;
     const double ms = best_ms(4, [&] { render::area_weighted_normals(subject.mesh.positions, subject.mesh.indices, normals); });
-    parts.add_row({"area-weighted normals", std::to_string(subject.mesh.indices.size() / 3), fixed(ms, 2)});
+    parts.add_row({"area-weighted normals (every frame)", std::to_string(subject.mesh.indices.size() / 3), fixed(ms, 2)});
+    const double split_ms = best_ms(2, [&] { render::split_creases(subject.mesh.positions, subject.mesh.indices, 40.0); });
+    parts.add_row({"crease split + closedness (topology change)", std::to_string(subject.mesh.indices.size() / 3), fixed(split_ms, 2)});
   }
   parts.print();
 }

@@ -131,6 +131,26 @@ TEST(Renderer, TransparentBackgroundHasZeroAlphaWhereNothingIsDrawn) {
   EXPECT_GT(fading, 20);
 }
 
+TEST(Renderer, TransparentBackgroundStoresStraightAlpha) {
+  // A half-transparent body over nothing keeps its lit colour; only alpha drops.
+  RenderSettings settings = small(0);
+  settings.transparent_background = true;
+  Renderer renderer(settings);
+  RenderScene scene;
+  scene.ground = false;
+  RenderMesh mesh = facing_triangle({0.9f, 0.5f, 0.1f});
+  scene.meshes = {mesh};
+  const auto opaque = at(renderer.render(scene, front_camera()), 48, 32);
+  mesh.opacity = 0.5f;
+  scene.meshes = {mesh};
+  const auto half = at(renderer.render(scene, front_camera()), 48, 32);
+  std::cout << "opaque " << opaque[0] << " " << opaque[1] << " " << opaque[2] << " " << opaque[3] << ", half "
+            << half[0] << " " << half[1] << " " << half[2] << " " << half[3] << "\n";
+  EXPECT_EQ(opaque[3], 255);
+  EXPECT_NEAR(half[3], 128, 1);
+  for (size_t c = 0; c < 3; ++c) EXPECT_NEAR(half[c], opaque[c], 3) << "channel " << c;
+}
+
 TEST(Renderer, EveryMsaaLevelRendersAndSmoothsEdges) {
   RenderScene scene;
   scene.ground = false;
@@ -229,6 +249,55 @@ TEST(Renderer, RejectsBadSettings) {
     EXPECT_EQ(e.kind(), ErrorKind::bad_input);
     EXPECT_NE(std::string(e.what()).find("resolution"), std::string::npos);
   }
+}
+
+TEST(Renderer, KeyLightCastsAShadowOnTheFloor) {
+  RenderScene scene;
+  scene.grid = false;
+  scene.meshes = {test::make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.8f, 0.8f, 0.8f})};
+  Camera camera;
+  camera.eye = {0.0, 6.0, 0.01};  // looking down: the whole shadow is in view
+  camera.target = {0.0, 0.0, 0.0};
+  const Image lit = Renderer(small(4, false)).render(scene, camera);
+  const Image shadowed = Renderer(small(4, true)).render(scene, camera);
+  int darker = 0, brighter = 0;
+  for (size_t i = 0; i < lit.rgba.size(); i += 4) {
+    darker += shadowed.rgba[i + 1] + 20 < lit.rgba[i + 1];
+    brighter += shadowed.rgba[i + 1] > lit.rgba[i + 1] + 2;
+  }
+  std::cout << "floor pixels darkened by the shadow: " << darker << " of " << lit.rgba.size() / 4 << "\n";
+  EXPECT_GT(darker, 150);  // the box's shadow covers a few hundred pixels here
+  EXPECT_EQ(brighter, 0);  // a shadow never adds light
+}
+
+TEST(Renderer, FloorFollowsGroundHeightAndToggles) {
+  const RenderSettings settings = small(0);
+  Renderer renderer(settings);
+  RenderScene scene;
+  scene.meshes = {test::make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.8f, 0.8f, 0.8f})};
+  const Camera camera = studio_camera(settings);
+  const Image base = renderer.render(scene, camera);
+  scene.ground_height = -0.5f;
+  const Image lowered = renderer.render(scene, camera);
+  scene.grid = false;
+  const Image no_grid = renderer.render(scene, camera);
+  scene.ground = false;
+  const Image no_floor = renderer.render(scene, camera);
+  EXPECT_NE(base.rgba, lowered.rgba);
+  EXPECT_NE(lowered.rgba, no_grid.rgba);
+  // Without a floor the bottom corner shows the background.
+  EXPECT_EQ(at(no_floor, 0, 63), (std::array<int, 4>{0x1d, 0x21, 0x27, 255}));
+  EXPECT_NE(at(base, 0, 63), (std::array<int, 4>{0x1d, 0x21, 0x27, 255}));
+}
+
+TEST(Renderer, RejectsADegenerateCamera) {
+  Renderer renderer(small(0));
+  Camera camera = front_camera();
+  camera.target = camera.eye;
+  EXPECT_THROW(renderer.render(RenderScene{}, camera), Error);
+  camera = front_camera();
+  camera.fov_y_degrees = 180.0;
+  EXPECT_THROW(renderer.render(RenderScene{}, camera), Error);
 }
 
 }  // namespace
