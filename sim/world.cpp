@@ -1,5 +1,7 @@
 #include "sim/world.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <chrono>
 #include <cmath>
 #include <limits>

@@ -1,5 +1,7 @@
 #include "sim/fem/assembly.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <algorithm>
 #include <limits>
 #include <Eigen/LU>

@@ -2,6 +2,7 @@
 //   P = 2 mu (F - R) + lambda (tr S - 3) R,     S = R^T F, d tr S / dF = R,
 //   dP = 2 mu (dF - dR) + lambda (R : dF) R + lambda (tr S - 3) dR,
 //   dR = U W V^T with W skew, W_ij = (M_ij - M_ji) / (s_i + s_j), M = U^T dF V.
+#include <Eigen/LU>
 #include <Eigen/SVD>
 #include <cmath>
 

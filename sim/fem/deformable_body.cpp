@@ -6,6 +6,7 @@
 #include "core/error.h"
 #include "sim/collision/embree_scene.h"
 #include "sim/geometry/boundary.h"
+#include "sim/geometry/mesh_stats.h"
 #include "sim/geometry/tetrahedralize.h"
 
 namespace recoil::sim {
@@ -76,7 +77,7 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
     tet_mass += m;
     for (int k = 0; k < 4; ++k) body.mass[body.rest.tets(t, k)] += 0.25 * m;
   }
-  body.surface_volume = enclosed_volume(body.surface.vertices, body.surface.triangles);
+  body.surface_volume = enclosed_volume(body.surface);
   if (!(body.surface_volume > 0.0)) {
     // An open or inward-wound surface: fall back to the tets' own volume.
     body.surface_volume = tet_mass / desc.material.density;

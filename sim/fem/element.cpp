@@ -1,5 +1,7 @@
 #include "sim/fem/element.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <Eigen/LU>
 
 #include "core/check.h"

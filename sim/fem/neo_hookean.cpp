@@ -3,6 +3,9 @@
 // (columns f_k of F):
 //   P  = mu F + lambda' (J - a) dJ/dF,
 //   dP = mu dF + lambda' (dJ/dF : dF) dJ/dF + lambda' (J - a) d(dJ/dF)[dF].
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
 #include "sim/fem/material.h"
 
 namespace recoil::sim {
@@ -25,7 +28,8 @@ DensityEval neo_hookean_density(const Eigen::Matrix3d& F, const Lame& lame, bool
   const Eigen::Matrix3d dJ = cofactor(F);
 
   DensityEval out;
-  out.psi = 0.5 * mu * (F.squaredNorm() - 3.0) + 0.5 * lambda * (J - alpha) * (J - alpha);
+  // The constant shifts psi(I) to zero: lambda'/2 (1 - a)^2 = mu^2 / (2 lambda').
+  out.psi = 0.5 * mu * (F.squaredNorm() - 3.0) + 0.5 * lambda * ((J - alpha) * (J - alpha) - (1.0 - alpha) * (1.0 - alpha));
   out.P = mu * F + lambda * (J - alpha) * dJ;
   if (!want_hessian) return out;
 

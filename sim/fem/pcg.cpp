@@ -1,5 +1,6 @@
 #include "sim/fem/pcg.h"
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
 #include <vector>

@@ -46,15 +46,4 @@ TriMesh boundary_surface(const TetMesh& mesh) {
   return surface;
 }
 
-double enclosed_volume(const Points& vertices, const Triangles& triangles) {
-  double six_v = 0.0;
-  for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
-    const Eigen::Vector3d a = vertices.row(triangles(f, 0)).transpose();
-    const Eigen::Vector3d b = vertices.row(triangles(f, 1)).transpose();
-    const Eigen::Vector3d c = vertices.row(triangles(f, 2)).transpose();
-    six_v += a.dot(b.cross(c));
-  }
-  return six_v / 6.0;
-}
-
 }  // namespace recoil::sim

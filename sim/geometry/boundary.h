@@ -10,7 +10,5 @@ namespace recoil::sim {
 // a deterministic order (sorted by their sorted node triple).
 TriMesh boundary_surface(const TetMesh& mesh);
 
-// Volume enclosed by a closed, outward-wound surface (divergence theorem), m^3.
-double enclosed_volume(const Points& vertices, const Triangles& triangles);
 
 }  // namespace recoil::sim

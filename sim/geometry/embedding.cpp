@@ -1,5 +1,7 @@
 #include "sim/geometry/embedding.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <Eigen/Dense>
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,7 @@
 #include "sim/geometry/tet_mesh.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <cmath>
 #include <utility>
 

@@ -1,5 +1,7 @@
 #include "sim/geometry/tetrahedralize.h"
 
+#include <Eigen/Geometry>
+#include <Eigen/LU>
 #include <algorithm>
 #include <array>
 #include <cmath>
