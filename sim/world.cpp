@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/check.h"
 #include "core/error.h"
 #include "sim/collision/embree_scene.h"
 #include "sim/fem/assembly.h"
@@ -69,6 +70,10 @@ World::World(const WorldDesc& desc)
 
   m_elastic.assign(m_bodies.size(), 0.0);
   m_min_ratio.assign(m_bodies.size(), 1.0);
+  reset_energy_reference();
+}
+
+void World::reset_energy_reference() {
   m_energy0.assign(m_bodies.size(), 0.0);
   m_energy_scale.assign(m_bodies.size(), 0.0);
   for (size_t i = 0; i < m_bodies.size(); ++i) {
@@ -180,6 +185,14 @@ void World::check_health(StepReport& report) {
   if (report.status == StepStatus::nan) ++m_counters.nan_steps;
   if (report.status == StepStatus::energy_blowup) ++m_counters.energy_blowup_steps;
   if (report.inverted_tets > 0) ++m_counters.inverted_steps;
+}
+
+void World::set_state(const Eigen::VectorXd& positions, const Eigen::VectorXd& velocities,
+                      bool reset_energy_ref) {
+  RECOIL_CHECK(positions.size() == m_x.size() && velocities.size() == m_v.size());
+  m_x = positions;
+  m_v = velocities;
+  if (reset_energy_ref && positions.allFinite() && velocities.allFinite()) reset_energy_reference();
 }
 
 std::vector<BodySurface> World::surfaces() const {

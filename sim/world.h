@@ -97,6 +97,12 @@ class World {
   // Global DoF vectors: 3 per node, bodies in order.
   const Eigen::VectorXd& positions() const { return m_x; }
   const Eigen::VectorXd& velocities() const { return m_v; }
+  // Replaces positions and velocities (3 per node, same layout), e.g. to
+  // restart from a saved state or to start deformed. Pinned nodes keep
+  // whatever they are given. RECOIL_CHECKs the sizes. The energy reference of
+  // the blow-up check restarts from the new state unless told otherwise.
+  void set_state(const Eigen::VectorXd& positions, const Eigen::VectorXd& velocities,
+                 bool reset_energy_reference = true);
   // The system matrix of the last step (for tests and the contact solver).
   const BlockSparseMatrix& system_matrix() const { return m_A; }
 
@@ -106,6 +112,7 @@ class World {
   void integrate();
   void check_health(StepReport& report);
   double total_energy(int body) const;
+  void reset_energy_reference();
 
   std::unique_ptr<EmbreeDevice> m_device;
   double m_dt;
