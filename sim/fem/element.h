@@ -30,8 +30,8 @@ struct ElementEval {
 };
 
 // `project`: clamp the 9x9 dP/dF to PSD before mapping to nodes, which makes
-// the 12x12 Hessian PSD (G^T C G with C PSD) at a third of the cost of an
-// eigen-decomposition of the 12x12.
+// the 12x12 Hessian PSD (G^T C G with C PSD) for less than the cost of an
+// eigen-decomposition of the 12x12 (analytic for the co-rotated model).
 ElementEval evaluate_element(MaterialModel model, const Lame& lame, const ElementRest& rest, const Vector12d& x,
                              bool want_hessian, bool project);
 

@@ -36,9 +36,8 @@ void project_psd(Matrix9d& m) {
   m = eig.eigenvectors() * values.asDiagonal() * eig.eigenvectors().transpose();
 }
 
-DensityEval evaluate_density(MaterialModel model, const Eigen::Matrix3d& F, const Lame& lame, bool want_hessian) {
-  return model == MaterialModel::corotated ? corotated_density(F, lame, want_hessian)
-                                           : neo_hookean_density(F, lame, want_hessian);
+DensityEval evaluate_density(MaterialModel model, const Eigen::Matrix3d& F, const Lame& lame, HessianMode mode) {
+  return model == MaterialModel::corotated ? corotated_density(F, lame, mode) : neo_hookean_density(F, lame, mode);
 }
 
 }  // namespace recoil::sim

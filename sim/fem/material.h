@@ -29,26 +29,34 @@ Lame lame_parameters(double youngs_modulus, double poisson_ratio);
 using Matrix9d = Eigen::Matrix<double, 9, 9>;
 using Vector9d = Eigen::Matrix<double, 9, 1>;
 
+// What second derivative to compute: none, the exact dP/dF, or dP/dF with
+// negative eigenvalues clamped to zero (so element Hessians are PSD).
+enum class HessianMode { none, exact, projected };
+
 // One energy density evaluation at deformation gradient F. Vectors over F are
 // column-major: index i + 3 j holds F(i, j).
 struct DensityEval {
   double psi = 0.0;                  // energy density, J/m^3
   Eigen::Matrix3d P;                 // first Piola-Kirchhoff stress dpsi/dF, Pa
-  Matrix9d dPdF;                     // d vec(P) / d vec(F), Pa (symmetric, not yet projected)
+  Matrix9d dPdF;                     // d vec(P) / d vec(F), Pa (symmetric; projected when asked)
 };
 
 // Co-rotated linear: psi = mu |F - R|^2 + lambda/2 (tr(R^T F) - 3)^2 with R
 // the rotation of the polar decomposition (SVD with reflections folded into
 // the smallest singular value, so inverted elements push back).
-DensityEval corotated_density(const Eigen::Matrix3d& F, const Lame& lame, bool want_hessian);
+// Its dP/dF has a closed-form eigen-system (the three "twist" directions
+// u_i v_j^T - u_j v_i^T carry all possibly negative eigenvalues), so its
+// projection is analytic.
+DensityEval corotated_density(const Eigen::Matrix3d& F, const Lame& lame, HessianMode mode);
 
 // Stable Neo-Hookean (Smith, de Goes, Kim 2018, without the log term):
 // psi = mu/2 (|F|^2 - 3) + lambda'/2 (J - a)^2, lambda' = lambda + mu,
 // a = 1 + mu / lambda', which matches linear elasticity at rest and is
 // defined for J <= 0.
-DensityEval neo_hookean_density(const Eigen::Matrix3d& F, const Lame& lame, bool want_hessian);
+// Projected by project_psd.
+DensityEval neo_hookean_density(const Eigen::Matrix3d& F, const Lame& lame, HessianMode mode);
 
-DensityEval evaluate_density(MaterialModel model, const Eigen::Matrix3d& F, const Lame& lame, bool want_hessian);
+DensityEval evaluate_density(MaterialModel model, const Eigen::Matrix3d& F, const Lame& lame, HessianMode mode);
 
 // Clamps negative eigenvalues of a symmetric matrix to zero.
 void project_psd(Matrix9d& m);

@@ -20,7 +20,7 @@ Eigen::Matrix3d cofactor(const Eigen::Matrix3d& F) {
 }
 }  // namespace
 
-DensityEval neo_hookean_density(const Eigen::Matrix3d& F, const Lame& lame, bool want_hessian) {
+DensityEval neo_hookean_density(const Eigen::Matrix3d& F, const Lame& lame, HessianMode mode) {
   const double mu = lame.mu;
   const double lambda = lame.lambda + lame.mu;
   const double alpha = 1.0 + mu / lambda;
@@ -31,7 +31,7 @@ DensityEval neo_hookean_density(const Eigen::Matrix3d& F, const Lame& lame, bool
   // The constant shifts psi(I) to zero: lambda'/2 (1 - a)^2 = mu^2 / (2 lambda').
   out.psi = 0.5 * mu * (F.squaredNorm() - 3.0) + 0.5 * lambda * ((J - alpha) * (J - alpha) - (1.0 - alpha) * (1.0 - alpha));
   out.P = mu * F + lambda * (J - alpha) * dJ;
-  if (!want_hessian) return out;
+  if (mode == HessianMode::none) return out;
 
   const Vector9d g = Eigen::Map<const Vector9d>(dJ.data());
   out.dPdF = mu * Matrix9d::Identity() + lambda * g * g.transpose();
@@ -52,6 +52,7 @@ DensityEval neo_hookean_density(const Eigen::Matrix3d& F, const Lame& lame, bool
   H.block<3, 3>(6, 0) = -skew(f1);
   H.block<3, 3>(6, 3) = skew(f0);
   out.dPdF += lambda * (J - alpha) * H;
+  if (mode == HessianMode::projected) project_psd(out.dPdF);
   return out;
 }
 

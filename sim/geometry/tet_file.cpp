@@ -25,6 +25,8 @@ using detail::LineReader;
 using Tokens = std::vector<std::string_view>;
 
 constexpr int kGmshTet4 = 4;
+constexpr int kGmshTet10 = 11;  // quadratic tet: its first four nodes are the corners
+bool is_gmsh_tet(long long type) { return type == kGmshTet4 || type == kGmshTet10; }
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -112,7 +114,7 @@ void gmsh_elements_v2(LineReader& r, Builder& b, long long limit) {
     if (t.size() < 3) r.fail("an element line needs: tag type ntags ...");
     const long long type = r.to_int(t[1], "element type");
     const long long ntags = r.to_count(t[2], "tag count", 64);
-    if (type == kGmshTet4) b.add_tet(r, t, 3 + static_cast<size_t>(ntags));
+    if (is_gmsh_tet(type)) b.add_tet(r, t, 3 + static_cast<size_t>(ntags));
   }
 }
 
@@ -151,7 +153,7 @@ void gmsh_elements_v4(LineReader& r, Builder& b, long long limit) {
     const long long k = r.to_count(bh[3], "elements in block", limit);
     for (long long i = 0; i < k; ++i) {
       const Tokens t = r.expect("an element line");
-      if (type == kGmshTet4) b.add_tet(r, t, 1);
+      if (is_gmsh_tet(type)) b.add_tet(r, t, 1);
     }
   }
 }

@@ -15,7 +15,8 @@ namespace recoil::sim {
 TetMesh read_tet_file(const std::filesystem::path& path);
 
 // Parsers over file contents; `name` is used in error messages only. Only
-// 4-node tetrahedra are kept; other Gmsh element types are skipped. Tets are
+// tetrahedra are kept (10-node ones as their 4 corners); other Gmsh element
+// types are skipped. Tets are
 // re-oriented positive; unused nodes are dropped.
 TetMesh parse_gmsh(const std::string& text, const std::string& name);
 TetMesh parse_tetgen(const std::string& node_text, const std::string& node_name,

@@ -168,6 +168,15 @@ TEST(World, TransformMassAndSurfaces) {
   EXPECT_NEAR(s.center_of_mass.y(), 3.0, 1e-6);
 }
 
+TEST(World, EulerAnglesApplyAboutXThenYThenZ) {
+  Transform t;
+  t.rotation = Eigen::Vector3d(90, 90, 0);
+  // Local +y: about x by 90 -> +z, then about y by 90 -> +x.
+  EXPECT_LT((t.rotation_matrix() * Eigen::Vector3d::UnitY() - Eigen::Vector3d::UnitX()).norm(), 1e-12);
+  t.rotation = Eigen::Vector3d(0, 0, 90);
+  EXPECT_LT((t.rotation_matrix() * Eigen::Vector3d::UnitX() - Eigen::Vector3d::UnitY()).norm(), 1e-12);
+}
+
 TEST(World, NumericalTroubleIsAStatus) {
   WorldDesc desc;
   desc.dt = 0.01;

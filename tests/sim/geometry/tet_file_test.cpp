@@ -130,6 +130,34 @@ TEST(TetFile, ReadsGmshV2AndV41AndTetgen) {
   expect_unit_cube(parse_tetgen(kNode, "cube.node", kEle, "cube.ele"));
 }
 
+TEST(TetFile, QuadraticTetsKeepTheirCorners) {
+  const char* text = R"($MeshFormat
+2.2 0 8
+$EndMeshFormat
+$Nodes
+10
+1 0 0 0
+2 1 0 0
+3 0 1 0
+4 0 0 1
+5 0.5 0 0
+6 0.5 0.5 0
+7 0 0.5 0
+8 0 0 0.5
+9 0 0.5 0.5
+10 0.5 0 0.5
+$EndNodes
+$Elements
+1
+1 11 0 1 2 3 4 5 6 7 8 9 10
+$EndElements
+)";
+  const TetMesh m = parse_gmsh(text, "quadratic.msh");
+  EXPECT_EQ(m.num_nodes(), 4);  // mid-edge nodes dropped
+  EXPECT_EQ(m.num_tets(), 1);
+  EXPECT_NEAR(total_volume(m), 1.0 / 6.0, 1e-15);
+}
+
 TEST(TetFile, ReadsFromDiskByExtension) {
   const auto dir = test::scratch_dir("tet_file_disk");
   std::ofstream(dir / "cube.msh") << kGmsh2;
