@@ -111,7 +111,8 @@ class World {
   PcgResult solve();
   void integrate();
   void check_health(StepReport& report);
-  double total_energy(int body) const;
+  // Kinetic + elastic + gravitational energy of a body, J, with the given elastic part.
+  double total_energy(int body, double elastic) const;
   void reset_energy_reference();
 
   std::unique_ptr<EmbreeDevice> m_device;
@@ -123,7 +124,7 @@ class World {
   BlockSparseMatrix m_A;
   std::vector<char> m_fixed;                 // per global node
   std::vector<double> m_energy0, m_energy_scale;  // per body, for the blow-up check
-  std::vector<double> m_elastic, m_min_ratio;     // per body, from the last health check
+  std::vector<double> m_elastic;    // per body: elastic energy at the start of the last step (from assembly)
   double m_time = 0.0;
   WorldCounters m_counters;
 };

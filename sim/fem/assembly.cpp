@@ -65,13 +65,13 @@ double assemble_body(const DeformableBody& body, const Eigen::VectorXd& x, const
   return energy;
 }
 
-ElasticState elastic_state(const DeformableBody& body, const Eigen::VectorXd& x) {
+ElasticState elastic_state(const DeformableBody& body, const Eigen::VectorXd& x, bool with_energy) {
   ElasticState s;
   s.min_volume_ratio = body.rest.num_tets() > 0 ? std::numeric_limits<double>::infinity() : 1.0;
   for (int t = 0; t < body.rest.num_tets(); ++t) {
     const ElementRest& rest = body.elements[static_cast<size_t>(t)];
     const Vector12d xe = gather(body, t, x);
-    s.energy += evaluate_element(body.material.model, body.lame, rest, xe, false, false).energy;
+    if (with_energy) s.energy += evaluate_element(body.material.model, body.lame, rest, xe, false, false).energy;
     const double ratio = deformation_gradient(rest, xe).determinant();
     s.min_volume_ratio = std::min(s.min_volume_ratio, ratio);
     if (!(ratio > 0.0)) ++s.inverted;

@@ -31,10 +31,12 @@ double assemble_body(const DeformableBody& body, const Eigen::VectorXd& x, const
                      const Eigen::Vector3d& gravity, BlockSparseMatrix& A, Eigen::VectorXd& b);
 
 struct ElasticState {
-  double energy = 0.0;             // J
+  double energy = 0.0;             // J (0 unless asked for)
   double min_volume_ratio = 1.0;   // min over tets of current / rest volume
   int inverted = 0;                // tets with volume ratio <= 0
 };
-ElasticState elastic_state(const DeformableBody& body, const Eigen::VectorXd& x);
+// Volume ratios from det F (cheap); the energy needs an SVD per element for
+// the co-rotated model, so it is only computed when asked for.
+ElasticState elastic_state(const DeformableBody& body, const Eigen::VectorXd& x, bool with_energy);
 
 }  // namespace recoil::sim
