@@ -1,0 +1,98 @@
+#include "sim/fem/deformable_body.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "core/error.h"
+#include "sim/collision/embree_scene.h"
+#include "sim/geometry/boundary.h"
+#include "sim/geometry/mesh_stats.h"
+#include "sim/geometry/tetrahedralize.h"
+
+namespace recoil::sim {
+
+namespace {
+
+constexpr double kDegrees = 3.14159265358979323846 / 180.0;
+
+// The boundary of a tet mesh as a compact surface (interior nodes dropped).
+TriMesh compact_boundary(const TetMesh& tets) {
+  const TriMesh full = boundary_surface(tets);
+  Eigen::VectorXi map = Eigen::VectorXi::Constant(full.num_vertices(), -1);
+  int next = 0;
+  TriMesh out;
+  out.triangles.resize(full.num_triangles(), 3);
+  for (int f = 0; f < full.num_triangles(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      int& m = map[full.triangles(f, k)];
+      if (m < 0) m = next++;
+      out.triangles(f, k) = m;
+    }
+  out.vertices.resize(next, 3);
+  for (int v = 0; v < full.num_vertices(); ++v)
+    if (map[v] >= 0) out.vertices.row(map[v]) = full.vertices.row(v);
+  return out;
+}
+
+}  // namespace
+
+Eigen::Matrix3d Transform::rotation_matrix() const {
+  return (Eigen::AngleAxisd(rotation.z() * kDegrees, Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(rotation.y() * kDegrees, Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(rotation.x() * kDegrees, Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+
+DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevice& device, const std::string& where) {
+  validate(desc.material, where + "/material");
+  if (!desc.transform.position.allFinite() || !desc.transform.rotation.allFinite() || !desc.velocity.allFinite())
+    throw bad_input(where + ": transform and velocity must be finite");
+  if (!desc.transform.scale.allFinite() || (desc.transform.scale.array() == 0.0).any())
+    throw bad_input(where + "/transform/scale: must be finite and non-zero");
+  if (desc.mesh.empty() && desc.tets.empty()) throw bad_input(where + ": needs a surface mesh or tets");
+
+  DeformableBody body;
+  body.name = desc.name;
+  body.material = desc.material;
+  body.lame = lame_parameters(desc.material.youngs_modulus, desc.material.poisson_ratio);
+
+  // Local rest shape, then the initial transform on both tets and surface.
+  body.rest = desc.tets.empty() ? tetrahedralize(device, desc.mesh, desc.resolution) : desc.tets;
+  body.surface = desc.mesh.empty() ? compact_boundary(body.rest) : desc.mesh;
+  const Eigen::Matrix3d R = desc.transform.rotation_matrix();
+  transform_in_place(body.rest, R, desc.transform.scale, desc.transform.position);
+  transform_in_place(body.surface, R, desc.transform.scale, desc.transform.position);
+  for (int t = 0; t < body.rest.num_tets(); ++t)
+    if (!(tet_volume(body.rest, t) > 0.0)) throw bad_input(where + ": tetrahedron " + std::to_string(t) + " is degenerate");
+  body.num_nodes = body.rest.num_nodes();
+  body.elements = element_rest(body.rest);
+  body.embedding = embed_points(body.rest, body.surface.vertices);
+
+  // Lumped masses from the tets, rescaled so the total is density times the
+  // volume the surface encloses (the lattice over-covers a curved surface).
+  body.mass = Eigen::VectorXd::Zero(body.num_nodes);
+  double tet_mass = 0.0;
+  for (int t = 0; t < body.rest.num_tets(); ++t) {
+    const double m = desc.material.density * body.elements[static_cast<size_t>(t)].volume;
+    tet_mass += m;
+    for (int k = 0; k < 4; ++k) body.mass[body.rest.tets(t, k)] += 0.25 * m;
+  }
+  body.surface_volume = enclosed_volume(body.surface);
+  if (!(body.surface_volume > 0.0)) {
+    // An open or inward-wound surface: fall back to the tets' own volume.
+    body.surface_volume = tet_mass / desc.material.density;
+  }
+  body.mass *= desc.material.density * body.surface_volume / tet_mass;
+
+  body.pinned.assign(static_cast<size_t>(body.num_nodes), 0);
+  if (desc.pinned) {
+    for (int i = 0; i < body.num_nodes; ++i) {
+      const Eigen::Vector3d p = body.rest.nodes.row(i).transpose();
+      body.pinned[static_cast<size_t>(i)] =
+          (p.array() >= desc.pinned->min.array()).all() && (p.array() <= desc.pinned->max.array()).all();
+    }
+  }
+  return body;
+}
+
+}  // namespace recoil::sim

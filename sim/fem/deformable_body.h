@@ -1,0 +1,69 @@
+#pragma once
+// A deformable body: its description (plain data with defaults, Box2D style)
+// and the runtime model built from it: rest elements, lumped masses, pinned
+// nodes and the embedded render/contact surface. Node positions and
+// velocities live in the World's global DoF vectors (3 per node); the body
+// owns the node range [node_offset, node_offset + num_nodes).
+#include <Eigen/Core>
+#include <array>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "sim/fem/element.h"
+#include "sim/fem/material.h"
+#include "sim/geometry/embedding.h"
+#include "sim/geometry/tet_mesh.h"
+
+namespace recoil::sim {
+
+class EmbreeDevice;
+
+// SPEC.md section 3 `transform`: p_world = R (scale .* p) + position with
+// R = Rz Ry Rx (Euler degrees applied about world x, then y, then z).
+struct Transform {
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m
+  Eigen::Vector3d rotation = Eigen::Vector3d::Zero();  // degrees about x, y, z
+  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
+  Eigen::Matrix3d rotation_matrix() const;
+};
+
+// A world-space box at the start; nodes inside (inclusive) are held fixed.
+struct PinBox {
+  Eigen::Vector3d min = Eigen::Vector3d::Zero();
+  Eigen::Vector3d max = Eigen::Vector3d::Zero();
+};
+
+struct DeformableBodyDesc {
+  std::string name = "body";
+  TriMesh mesh;          // surface in local coordinates; may be empty when tets are given
+  TetMesh tets;          // conforming tets in local coordinates; empty: tetrahedralize `mesh`
+  int resolution = 8;    // lattice cells along the longest side when tetrahedralizing
+  Material material;
+  Transform transform;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s, initial, every node
+  std::optional<PinBox> pinned;
+};
+
+struct DeformableBody {
+  std::string name;
+  int node_offset = 0;   // first node in the world's DoF layout
+  int num_nodes = 0;
+  TetMesh rest;          // world-space rest shape (after the initial transform), local node numbers
+  std::vector<ElementRest> elements;
+  Material material;
+  Lame lame;
+  Eigen::VectorXd mass;          // #nodes lumped masses, kg
+  std::vector<char> pinned;      // #nodes
+  double surface_volume = 0.0;   // m^3 enclosed by the surface (mass = density * this)
+  TriMesh surface;               // rest surface (triangles used for rendering/contact)
+  Embedding embedding;           // surface vertices in the tets
+  std::vector<std::array<int, 16>> block_index;  // per tet: storage index of block (a, b) at 4a+b
+};
+
+// Builds the body (tetrahedralizing through `device` when needed). Throws
+// bad_input naming `where` for invalid descriptions. Initial positions are
+// the rest nodes; the caller copies them into the global vectors.
+DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevice& device, const std::string& where);
+
+}  // namespace recoil::sim
