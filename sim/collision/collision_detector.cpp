@@ -127,10 +127,8 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
     const Impl::SurfaceScenes& sa = m_impl->scenes[a.index];
     const Impl::SurfaceScenes& sb = m_impl->scenes[b.index];
     if (!sa.edges || !sb.edges) return;
-    std::vector<std::pair<int, int>> pairs = sa.edges->overlapping_pairs(*sb.edges);
-    if (a.index == b.index)  // self: each unordered pair once, never an edge with itself
-      pairs.erase(std::remove_if(pairs.begin(), pairs.end(), [](const auto& p) { return p.first >= p.second; }),
-                  pairs.end());
+    // Self: each unordered pair once, (lo, hi), as test_edge_edge requires.
+    const std::vector<std::pair<int, int>> pairs = sa.edges->overlapping_pairs(*sb.edges);
     m_stats.edge_edge_pairs += static_cast<long long>(pairs.size());
     parallel_chunks(pairs.size(), threads,
                     [&](size_t begin, size_t end, std::vector<ContactCandidate>& part) {

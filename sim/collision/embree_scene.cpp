@@ -267,6 +267,15 @@ std::vector<std::pair<int, int>> BoxScene::overlapping_pairs(const BoxScene& oth
   if (m_impl->bounds.empty() || other.m_impl->bounds.empty()) return {};
   rtcCollide(m_impl->scene, other.m_impl->scene, collect_collisions, &output);
   m_impl->device->throw_if_error("rtcCollide on box scenes");
+  if (&other == this) {
+    // Self-collision: each unordered pair once as (lo, hi), never (i, i),
+    // whichever order Embree reported it in.
+    for (auto& pair : output.pairs)
+      if (pair.first > pair.second) std::swap(pair.first, pair.second);
+    output.pairs.erase(std::remove_if(output.pairs.begin(), output.pairs.end(),
+                                      [](const auto& pair) { return pair.first == pair.second; }),
+                       output.pairs.end());
+  }
   std::sort(output.pairs.begin(), output.pairs.end());
   output.pairs.erase(std::unique(output.pairs.begin(), output.pairs.end()), output.pairs.end());
   return std::move(output.pairs);

@@ -99,8 +99,8 @@ class BoxScene {
   int num_boxes() const;
 
   // Every pair (i in this scene, j in `other`) whose float boxes overlap
-  // (touching counts), sorted and unique. With other == *this both (i, j) and
-  // (j, i) are listed, and (i, i) too.
+  // (touching counts), sorted and unique. With other == *this: each pair of
+  // different boxes once, as (i, j) with i < j.
   std::vector<std::pair<int, int>> overlapping_pairs(const BoxScene& other) const;
 
   struct Impl;
