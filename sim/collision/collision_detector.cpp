@@ -14,8 +14,9 @@ namespace recoil::sim {
 struct CollisionDetector::Impl {
   struct SurfaceScenes {
     Triangles triangles;  // the topology the scenes were built for
+    std::vector<std::array<int, 2>> edges;  // unique_edges(triangles)
     std::unique_ptr<TriangleScene> faces;
-    std::unique_ptr<BoxScene> edges;
+    std::unique_ptr<BoxScene> edge_boxes;  // keyed by the edges' vertices for self queries
   };
   EmbreeDevice device;
   std::vector<SurfaceScenes> scenes;
@@ -76,29 +77,33 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
   m_stats = {};
   const double margin = m_settings.margin;
   const int threads = m_settings.num_threads;
+  // Refit (same triangles as last call) or rebuild each surface's scenes.
   std::vector<PreparedSurface> prepared;
   prepared.reserve(surfaces.size());
-  for (size_t i = 0; i < surfaces.size(); ++i) prepared.push_back(prepare_surface(surfaces[i], static_cast<int>(i)));
-
-  // Refit (same triangles as last call) or rebuild each surface's scenes.
   m_impl->scenes.resize(surfaces.size());
   for (size_t i = 0; i < surfaces.size(); ++i) {
     Impl::SurfaceScenes& sc = m_impl->scenes[i];
     const CollisionSurface& s = surfaces[i];
-    const bool same = sc.faces && sc.triangles.rows() == s.triangles.rows() && sc.triangles == s.triangles;
     if (s.triangles.rows() == 0) {
       sc = {};
+      prepared.push_back(prepare_surface(s, static_cast<int>(i)));
       continue;
     }
+    const bool same = sc.faces && sc.triangles.rows() == s.triangles.rows() && sc.triangles == s.triangles;
+    if (!same) sc.edges = unique_edges(s.triangles);
+    // Validates the surface before Embree sees it.
+    prepared.push_back(prepare_surface(s, static_cast<int>(i), &sc.edges));
     if (same) {
       sc.faces->update_vertices(s.x0);
     } else {
       sc.triangles = s.triangles;
       sc.faces = std::make_unique<TriangleScene>(m_impl->device, s.x0, s.triangles, /*dynamic=*/true);
-      sc.edges = std::make_unique<BoxScene>(m_impl->device);
+      sc.edge_boxes = std::make_unique<BoxScene>(m_impl->device);
       ++m_stats.rebuilt_surfaces;
     }
-    sc.edges->set_boxes(edge_boxes(prepared[i], margin));
+    sc.edge_boxes->set_boxes(edge_boxes(prepared[i], margin), self_interacts(prepared[i])
+                                                                  ? sc.edges
+                                                                  : std::vector<std::array<int, 2>>{});
   }
 
   std::vector<ContactCandidate> out;
@@ -126,9 +131,9 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
   auto edges_against_edges = [&](const PreparedSurface& a, const PreparedSurface& b) {
     const Impl::SurfaceScenes& sa = m_impl->scenes[a.index];
     const Impl::SurfaceScenes& sb = m_impl->scenes[b.index];
-    if (!sa.edges || !sb.edges) return;
+    if (!sa.edge_boxes || !sb.edge_boxes) return;
     // Self: each unordered pair once, (lo, hi), as test_edge_edge requires.
-    const std::vector<std::pair<int, int>> pairs = sa.edges->overlapping_pairs(*sb.edges);
+    const std::vector<std::pair<int, int>> pairs = sa.edge_boxes->overlapping_pairs(*sb.edge_boxes);
     m_stats.edge_edge_pairs += static_cast<long long>(pairs.size());
     parallel_chunks(pairs.size(), threads,
                     [&](size_t begin, size_t end, std::vector<ContactCandidate>& part) {

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <mutex>
 
 #include "core/check.h"
@@ -68,9 +69,19 @@ double copy_vertices(const Points& vertices, float* buffer) {
   return max_abs;
 }
 
+struct NearOutput {
+  std::vector<int>* ids;
+  bool failed = false;  // an allocation failed inside the callback
+};
+
 // Collects the primitive ids Embree offers; the exact test happens later in double.
 bool collect_primitive(RTCPointQueryFunctionArguments* args) {
-  static_cast<std::vector<int>*>(args->userPtr)->push_back(static_cast<int>(args->primID));
+  auto* output = static_cast<NearOutput*>(args->userPtr);
+  try {
+    output->ids->push_back(static_cast<int>(args->primID));
+  } catch (...) {  // nothing may cross the C callback
+    output->failed = true;
+  }
   return false;  // the query radius is left unchanged
 }
 }  // namespace
@@ -168,7 +179,9 @@ void TriangleScene::triangles_near(const Eigen::Vector3d& center, double radius,
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
   const size_t first = out.size();
-  rtcPointQuery(m_impl->scene, &query, &context, collect_primitive, &out);
+  NearOutput output{&out};
+  rtcPointQuery(m_impl->scene, &query, &context, collect_primitive, &output);
+  if (output.failed) throw Error(ErrorKind::internal, "out of memory in a point query");
   std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
   out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(first), out.end()), out.end());
 }
@@ -178,6 +191,7 @@ struct BoxScene::Impl {
   RTCScene scene = nullptr;
   RTCGeometry geometry = nullptr;
   std::vector<RTCBounds> bounds;  // read by the bounds callback during commits
+  std::vector<std::array<int, 2>> keys;  // empty or one per box
 };
 
 namespace {
@@ -205,16 +219,61 @@ struct CollideOutput {
   const BoxScene::Impl* scene1;
   std::mutex mutex;  // Embree may call back from several threads
   std::vector<std::pair<int, int>> pairs;
+  bool failed = false;  // an allocation failed inside the callback
 };
+
+void append_overlaps(CollideOutput& output, const RTCCollision* collisions, unsigned int count) {
+  const bool self = output.scene0 == output.scene1;
+  const std::vector<std::array<int, 2>>& keys = output.scene0->keys;
+  // Filter outside the lock; only the survivors are appended under it.
+  thread_local std::vector<std::pair<int, int>> kept;
+  kept.clear();
+  for (unsigned int k = 0; k < count; ++k) {
+    unsigned i = collisions[k].primID0, j = collisions[k].primID1;
+    if (self) {
+      // Each unordered pair once as (lo, hi), whichever order Embree used.
+      if (i == j) continue;
+      if (i > j) std::swap(i, j);
+      if (!keys.empty() && (keys[i][0] == keys[j][0] || keys[i][0] == keys[j][1] || keys[i][1] == keys[j][0] ||
+                            keys[i][1] == keys[j][1]))
+        continue;
+    }
+    // Embree reports leaf-box pairs: keep the pairs whose own boxes overlap.
+    if (overlap(output.scene0->bounds[i], output.scene1->bounds[j]))
+      kept.emplace_back(static_cast<int>(i), static_cast<int>(j));
+  }
+  std::lock_guard<std::mutex> lock(output.mutex);
+  output.pairs.insert(output.pairs.end(), kept.begin(), kept.end());
+}
+
+// Sorts (i, j) pairs of non-negative ints and drops repeats: an LSD radix
+// sort on 64-bit keys, much faster than std::sort for the millions of pairs
+// a fine self-colliding surface produces.
+void sort_unique_pairs(std::vector<std::pair<int, int>>& pairs) {
+  std::vector<std::uint64_t> keys(pairs.size()), scratch(pairs.size());
+  for (size_t k = 0; k < pairs.size(); ++k)
+    keys[k] = (static_cast<std::uint64_t>(pairs[k].first) << 32) | static_cast<std::uint32_t>(pairs[k].second);
+  for (int shift = 0; shift < 64; shift += 16) {
+    std::vector<size_t> offset(65537, 0);
+    for (std::uint64_t key : keys) ++offset[((key >> shift) & 0xFFFF) + 1];
+    if (offset[1] == keys.size()) continue;  // all in bucket 0: this digit is already sorted
+    for (size_t b = 1; b < offset.size(); ++b) offset[b] += offset[b - 1];
+    for (std::uint64_t key : keys) scratch[offset[(key >> shift) & 0xFFFF]++] = key;
+    keys.swap(scratch);
+  }
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  pairs.resize(keys.size());
+  for (size_t k = 0; k < keys.size(); ++k)
+    pairs[k] = {static_cast<int>(keys[k] >> 32), static_cast<int>(keys[k] & 0xFFFFFFFFu)};
+}
 
 void collect_collisions(void* user, RTCCollision* collisions, unsigned int count) {
   auto* output = static_cast<CollideOutput*>(user);
-  std::lock_guard<std::mutex> lock(output->mutex);
-  for (unsigned int k = 0; k < count; ++k) {
-    const unsigned i = collisions[k].primID0, j = collisions[k].primID1;
-    // Embree reports leaf-box pairs: keep the pairs whose own boxes overlap.
-    if (overlap(output->scene0->bounds[i], output->scene1->bounds[j]))
-      output->pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
+  try {
+    append_overlaps(*output, collisions, count);
+  } catch (...) {  // nothing may cross the C callback
+    std::lock_guard<std::mutex> lock(output->mutex);
+    output->failed = true;
   }
 }
 }  // namespace
@@ -242,7 +301,9 @@ BoxScene::~BoxScene() {
 
 int BoxScene::num_boxes() const { return static_cast<int>(m_impl->bounds.size()); }
 
-void BoxScene::set_boxes(const std::vector<Aabb>& boxes) {
+void BoxScene::set_boxes(const std::vector<Aabb>& boxes, std::vector<std::array<int, 2>> keys) {
+  RECOIL_CHECK(keys.empty() || keys.size() == boxes.size(), keys.size() << " keys for " << boxes.size() << " boxes");
+  m_impl->keys = std::move(keys);
   const bool same_count = boxes.size() == m_impl->bounds.size();
   m_impl->bounds.resize(boxes.size());
   for (size_t i = 0; i < boxes.size(); ++i) {
@@ -263,21 +324,12 @@ void BoxScene::set_boxes(const std::vector<Aabb>& boxes) {
 }
 
 std::vector<std::pair<int, int>> BoxScene::overlapping_pairs(const BoxScene& other) const {
-  CollideOutput output{m_impl.get(), other.m_impl.get(), {}, {}};
+  CollideOutput output{m_impl.get(), other.m_impl.get(), {}, {}, false};
   if (m_impl->bounds.empty() || other.m_impl->bounds.empty()) return {};
   rtcCollide(m_impl->scene, other.m_impl->scene, collect_collisions, &output);
   m_impl->device->throw_if_error("rtcCollide on box scenes");
-  if (&other == this) {
-    // Self-collision: each unordered pair once as (lo, hi), never (i, i),
-    // whichever order Embree reported it in.
-    for (auto& pair : output.pairs)
-      if (pair.first > pair.second) std::swap(pair.first, pair.second);
-    output.pairs.erase(std::remove_if(output.pairs.begin(), output.pairs.end(),
-                                      [](const auto& pair) { return pair.first == pair.second; }),
-                       output.pairs.end());
-  }
-  std::sort(output.pairs.begin(), output.pairs.end());
-  output.pairs.erase(std::unique(output.pairs.begin(), output.pairs.end()), output.pairs.end());
+  if (output.failed) throw Error(ErrorKind::internal, "out of memory in rtcCollide");
+  sort_unique_pairs(output.pairs);
   return std::move(output.pairs);
 }
 

@@ -15,6 +15,7 @@
 // Embree works in float: every query here is conservative (boxes rounded
 // outward, query spheres padded) and callers filter the results exactly in
 // double precision.
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
@@ -94,13 +95,15 @@ class BoxScene {
   BoxScene& operator=(const BoxScene&) = delete;
 
   // Replaces the boxes (each rounded outward to float). The BVH is refitted
-  // when the count is unchanged and rebuilt otherwise.
-  void set_boxes(const std::vector<Aabb>& boxes);
+  // when the count is unchanged and rebuilt otherwise. `keys` (empty, or one
+  // pair per box) only matter for self queries: two boxes with a key in common
+  // are never paired (edges that share a vertex, say).
+  void set_boxes(const std::vector<Aabb>& boxes, std::vector<std::array<int, 2>> keys = {});
   int num_boxes() const;
 
   // Every pair (i in this scene, j in `other`) whose float boxes overlap
   // (touching counts), sorted and unique. With other == *this: each pair of
-  // different boxes once, as (i, j) with i < j.
+  // different boxes without a common key once, as (i, j) with i < j.
   std::vector<std::pair<int, int>> overlapping_pairs(const BoxScene& other) const;
 
   struct Impl;

@@ -55,7 +55,21 @@ Eigen::Vector3d lerp(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, doubl
 
 }  // namespace
 
-PreparedSurface prepare_surface(const CollisionSurface& surface, int index) {
+std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles) {
+  std::vector<std::array<int, 2>> edges;
+  edges.reserve(3 * static_cast<size_t>(triangles.rows()));
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int v = triangles(f, k), w = triangles(f, (k + 1) % 3);
+      edges.push_back({std::min(v, w), std::max(v, w)});
+    }
+  std::sort(edges.begin(), edges.end());
+  edges.erase(std::unique(edges.begin(), edges.end()), edges.end());
+  return edges;
+}
+
+PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
+                                const std::vector<std::array<int, 2>>* edges) {
   PreparedSurface out;
   out.surface = &surface;
   out.index = index;
@@ -71,20 +85,16 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index) {
     out.length_scale = std::max(surface.x0.cwiseAbs().maxCoeff(), surface.x1.cwiseAbs().maxCoeff());
   const int nf = static_cast<int>(surface.triangles.rows());
   out.triangle_motion.resize(static_cast<size_t>(nf));
-  out.edges.reserve(3 * static_cast<size_t>(nf));
   for (int f = 0; f < nf; ++f) {
     double motion = 0.0;
     for (int k = 0; k < 3; ++k) {
       const int v = surface.triangles(f, k);
       RECOIL_CHECK(v >= 0 && v < nv, "surface " << index << " triangle " << f << " has vertex " << v);
       motion = std::max(motion, out.vertex_motion[v]);
-      const int w = surface.triangles(f, (k + 1) % 3);
-      out.edges.push_back({std::min(v, w), std::max(v, w)});
     }
     out.triangle_motion[f] = motion;
   }
-  std::sort(out.edges.begin(), out.edges.end());
-  out.edges.erase(std::unique(out.edges.begin(), out.edges.end()), out.edges.end());
+  out.edges = edges ? *edges : unique_edges(surface.triangles);
   out.edge_motion.resize(out.edges.size());
   for (size_t e = 0; e < out.edges.size(); ++e)
     out.edge_motion[e] = std::max(out.vertex_motion[out.edges[e][0]], out.vertex_motion[out.edges[e][1]]);

@@ -51,7 +51,12 @@ struct PreparedSurface {
 };
 
 // Checks shapes and indices (a mismatch is a caller bug: RECOIL_CHECK).
-PreparedSurface prepare_surface(const CollisionSurface& surface, int index);
+// `edges`, if given, is unique_edges(surface.triangles) from an earlier step.
+PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
+                                const std::vector<std::array<int, 2>>* edges = nullptr);
+
+// The undirected edges of a triangle list as (lo, hi) vertex pairs, sorted, unique.
+std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles);
 
 // Whether two different surfaces are tested against each other / a surface
 // against itself / a surface against planes.

@@ -79,6 +79,9 @@ TEST(EmbreeScene, BoxPairsOverlapIncludingTouching) {
   EXPECT_TRUE(a.overlapping_pairs(a).empty());  // self: distinct boxes only
   a.set_boxes({box(0, 1), box(0.5, 3), box(5, 6), box(2.5, 5)});
   EXPECT_EQ(a.overlapping_pairs(a), (Pairs{{0, 1}, {1, 3}, {2, 3}}));
+  // Keys (say, edge end vertices): boxes sharing one are not paired with each other.
+  a.set_boxes({box(0, 1), box(0.5, 3), box(5, 6), box(2.5, 5)}, {{{0, 1}}, {{1, 2}}, {{3, 4}}, {{5, 6}}});
+  EXPECT_EQ(a.overlapping_pairs(a), (Pairs{{1, 3}, {2, 3}}));
 }
 
 }  // namespace recoil::sim
