@@ -20,7 +20,10 @@
 // Closest-point weights: a vertex-triangle closest point on an edge or vertex
 // of the triangle has exact zero weights elsewhere, and finalize_candidates()
 // keeps one candidate per (vertex, feature): touching a mesh vertex shared by
-// six triangles gives one contact, not six.
+// six triangles gives one contact, not six. Between two surfaces both
+// directions are searched, so two vertices meeting (corner on corner) appear
+// once as A's vertex against B's vertex feature and once the other way round;
+// the two rows are the same constraint and the contact code may merge them.
 //
 // Normal (from q on B to p on A): (p - q)/|p - q| while the points are apart
 // (so the gap is the distance, >= 0, and open or thin surfaces work from both

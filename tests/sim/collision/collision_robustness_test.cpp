@@ -6,6 +6,7 @@
 
 #include "sim/collision/brute_force.h"
 #include "sim/collision/collision_detector.h"
+#include "sim/collision/embree_scene.h"
 #include "tests/sim/collision/collision_candidate_checks.h"
 #include "tests/sim/collision/collision_test_meshes.h"
 
@@ -40,6 +41,8 @@ TEST_P(ThinPlate, FastSmallObjectIsCaught) {
   const CollisionSurface plate =
       moving_surface(testing::box({0.2, 0.2, plate_half}), 2, SurfaceKind::static_body, Eigen::Vector3d::Zero());
   const auto found = detect_checked({falling, plate}, {}, 0.002);
+  EmbreeDevice device;
+  const TriangleScene plate_scene(device, plate.x0, plate.triangles, /*dynamic=*/false);
 
   // Every cube vertex whose path crosses the plate's top face must have a
   // candidate against it with the time of impact and an upward normal.
@@ -64,6 +67,13 @@ TEST_P(ThinPlate, FastSmallObjectIsCaught) {
       // The linearised constraint n.(p1 - q1) >= 0 is violated by the
       // predicted motion, so the solver will act on it.
       EXPECT_LT(first->normal.dot(falling.x1.row(v).transpose() - first->b.evaluate(plate.x1)), 0.0);
+      // An Embree ray along the vertex's path (the plate is static, so a ray
+      // is exact here) agrees, to float precision.
+      const Eigen::Vector3d origin = falling.x0.row(v).transpose();
+      const auto hit = plate_scene.first_hit(origin, falling.x1.row(v).transpose() - origin, 0.0, 1.0);
+      ASSERT_TRUE(hit.has_value());
+      EXPECT_NEAR(hit->t, *first->toi, 1e-5);
+      EXPECT_EQ(hit->triangle, first->primitive_b);
     }
     EXPECT_TRUE(caught) << "vertex " << v << " tunnels";
   }
@@ -91,6 +101,7 @@ TEST(CollisionRobustness, ThinPlateAgainstFastSheetEdges) {
       ++edge_impacts;
       EXPECT_NEAR(c.normal.z(), 1.0, 1e-12);  // from the plate up to the stick that hits it from above
     }
+  std::cout << edge_impacts << " edge-edge impacts of horizontal stick edges with the plate\n";
   EXPECT_GT(edge_impacts, 0);
 }
 
