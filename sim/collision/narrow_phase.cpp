@@ -21,8 +21,9 @@ double pair_tolerance(const PreparedSurface& a, const PreparedSurface& b) {
 // The rule in narrow_phase.h. sep0 = p0 - q0 (start of step, with the
 // candidate's weights), rel = relative motion of p with respect to q over the
 // step, feature = face normal / edge cross product where the contact is
-// judged (zero if degenerate).
-Eigen::Vector3d choose_normal(bool touching, const Eigen::Vector3d& sep0, Eigen::Vector3d feature,
+// judged (zero if degenerate). `outward`: the feature's own sign means
+// something (a face normal of a counter-clockwise triangle points out of B).
+Eigen::Vector3d choose_normal(bool touching, const Eigen::Vector3d& sep0, Eigen::Vector3d feature, bool outward,
                               const Eigen::Vector3d& rel, double tol) {
   const double sep_norm = sep0.norm();
   if (!touching && sep_norm > 0.0) return sep0 / sep_norm;
@@ -31,6 +32,10 @@ Eigen::Vector3d choose_normal(bool touching, const Eigen::Vector3d& sep0, Eigen:
     feature /= feature_norm;
     const double along = feature.dot(sep0);
     if (std::abs(along) > tol) return along > 0.0 ? feature : Eigen::Vector3d(-feature);
+    // Touching at the start: which side p is on is unknown. Trust the
+    // surface orientation if there is one (A outside B), else assume p
+    // approaches along its relative motion.
+    if (outward) return feature;
     return feature.dot(rel) > 0.0 ? Eigen::Vector3d(-feature) : feature;
   }
   if (sep_norm > tol) return sep0 / sep_norm;
@@ -157,7 +162,7 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const Eigen::Vector3d q0 = c.b.evaluate(sb.x0), q1 = c.b.evaluate(sb.x1);
   const Eigen::Vector3d sep0 = p0 - q0, rel = (p1 - q1) - sep0;
   const bool touching = c.toi.has_value() || sep0.norm() <= tol;
-  c.normal = choose_normal(touching, sep0, feature, rel, tol);
+  c.normal = choose_normal(touching, sep0, feature, /*outward=*/true, rel, tol);
   c.gap = c.normal.dot(sep0);
   return c;
 }
@@ -213,7 +218,7 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const Eigen::Vector3d sep0 = c.a.evaluate(sa.x0) - c.b.evaluate(sb.x0);
   const Eigen::Vector3d rel = (c.a.evaluate(sa.x1) - c.b.evaluate(sb.x1)) - sep0;
   const bool touching = toi.has_value() || sep0.norm() <= tol;
-  c.normal = choose_normal(touching, sep0, feature, rel, tol);
+  c.normal = choose_normal(touching, sep0, feature, /*outward=*/false, rel, tol);
   c.gap = c.normal.dot(sep0);
   return c;
 }

@@ -27,10 +27,13 @@
 //
 // Normal (from q on B to p on A): (p - q)/|p - q| while the points are apart
 // (so the gap is the distance, >= 0, and open or thin surfaces work from both
-// sides). When they touch (or at an impact found by the continuous check) the
-// face normal (vertex-triangle) or the cross product of the edges (edge-edge),
-// oriented against the relative motion of A with respect to B; when that is
-// also degenerate, the reversed relative motion; finally +z.
+// sides). At an impact found by the continuous check: the face normal
+// (vertex-triangle) or the cross product of the edges (edge-edge) at the
+// impact, turned towards the side p started on. When they already touch at
+// the start, that side is unknown: a face normal keeps its outward sign
+// (counter-clockwise triangles; A is assumed outside B), an edge cross product
+// is turned against the relative motion. Degenerate features fall back to
+// the direction of p - q, then the reversed relative motion, finally +z.
 #include <vector>
 
 #include "sim/collision/collision_types.h"

@@ -155,6 +155,33 @@ TEST(CollisionRobustness, VertexExactlyOnAnEdge) {
   EXPECT_EQ(on_edge, 1);
 }
 
+TEST(CollisionRobustness, RestingVertexKeepsTheOutwardNormalWhicheverWayItMoves) {
+  // A box corner exactly on a face's interior at the start, leaving it, still,
+  // or pressing into it: the normal is the face's outward normal each time.
+  TriMesh square;
+  square.vertices.resize(4, 3);
+  square.vertices << 0, 0, 0, 1, 0, 0, 1, 1, 0, 0, 1, 0;
+  square.triangles.resize(2, 3);
+  square.triangles << 0, 1, 2, 0, 2, 3;
+  TriMesh probe = testing::box({0.1, 0.1, 0.1});
+  probe.vertices.rowwise() += Eigen::RowVector3d(0.8, 0.3, 0.1);  // corner 0 at (0.7, 0.2, 0)
+  for (double dz : {0.001, 0.0, -0.001}) {
+    const auto found =
+        detect_checked({moving_surface(probe, 1, SurfaceKind::rigid, Eigen::Vector3d(0.0005, 0, dz)),
+                        moving_surface(square, 2, SurfaceKind::static_body, Eigen::Vector3d::Zero())},
+                       {}, 0.002);
+    int resting = 0;
+    for (const ContactCandidate& c : found)
+      if (c.kind == ContactKind::vertex_triangle && c.surface_a == 0 && c.primitive_a == 0) {
+        ++resting;
+        EXPECT_EQ(c.primitive_b, 0);
+        EXPECT_EQ(c.gap, 0.0);
+        EXPECT_NEAR(c.normal.z(), 1.0, 1e-12) << "dz " << dz;
+      }
+    EXPECT_EQ(resting, 1) << "dz " << dz;
+  }
+}
+
 TEST(CollisionRobustness, DegenerateTriangles) {
   // A surface with a zero-area triangle (collinear) and one with a repeated
   // vertex, next to a moving small box.
