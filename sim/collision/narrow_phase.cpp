@@ -146,7 +146,10 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   c.a.weight = {1.0, 0.0, 0.0};
   c.b.count = 3;
   c.b.vertex = tv;
-  if (motion > 0.0) c.toi = vertex_triangle_toi(p0, p1, t0[0], t1[0], t0[1], t1[1], t0[2], t1[2], tol);
+  // A root of the coplanarity cubic is known to ~1e-12 of the step at worst
+  // (grazing motion), so the touch test allows that much of the motion too.
+  if (motion > 0.0)
+    c.toi = vertex_triangle_toi(p0, p1, t0[0], t1[0], t0[1], t1[1], t0[2], t1[2], tol + 1e-12 * motion);
 
   Eigen::Vector3d feature = Eigen::Vector3d::Zero();
   if (c.toi) {
@@ -187,7 +190,7 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const Eigen::Vector3d a0e = row(sa.x1, ea[0]), a1e = row(sa.x1, ea[1]);
   const Eigen::Vector3d b0e = row(sb.x1, eb[0]), b1e = row(sb.x1, eb[1]);
   std::optional<double> toi;
-  if (motion > 0.0) toi = edge_edge_toi(a0, a0e, a1, a1e, b0, b0e, b1, b1e, tol);
+  if (motion > 0.0) toi = edge_edge_toi(a0, a0e, a1, a1e, b0, b0e, b1, b1e, tol + 1e-12 * motion);
   Eigen::Vector3d feature;
   if (toi) {
     const double s = *toi;
