@@ -107,7 +107,6 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
   }
 
   std::vector<ContactCandidate> out;
-  std::vector<long long> offered(1, 0);
   auto vertices_against_triangles = [&](const PreparedSurface& a, const PreparedSurface& b) {
     const TriangleScene* scene = m_impl->scenes[b.index].faces.get();
     if (!scene) return;
@@ -119,7 +118,12 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
                         near.clear();
                         const int vi = static_cast<int>(v);
                         const Eigen::Vector3d p = a.surface->x0.row(vi).transpose();
-                        scene->triangles_near(p, margin + a.vertex_motion[v] + b.max_motion, near);
+                        const double radius = margin + a.vertex_motion[v] + b.max_motion;
+                        // Farther than `radius` from all of B (its box) is never a candidate.
+                        const Eigen::Vector3d outside =
+                            (b.box0.min - p).cwiseMax(p - b.box0.max).cwiseMax(0.0);
+                        if (outside.norm() > radius) continue;
+                        scene->triangles_near(p, radius, near);
                         counts[v] = static_cast<long long>(near.size());
                         for (int t : near)
                           if (auto c = test_vertex_triangle(a, vi, b, t, margin)) part.push_back(std::move(*c));
@@ -148,7 +152,7 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
     const PreparedSurface& a = prepared[i];
     for (size_t j = i + 1; j < prepared.size(); ++j) {
       const PreparedSurface& b = prepared[j];
-      if (!surfaces_interact(a, b)) continue;
+      if (!surfaces_interact(a, b) || !boxes_may_interact(a, b, margin)) continue;
       vertices_against_triangles(a, b);
       vertices_against_triangles(b, a);
       edges_against_edges(a, b);

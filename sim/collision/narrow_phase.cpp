@@ -83,6 +83,7 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   RECOIL_CHECK(surface.x0.allFinite() && surface.x1.allFinite(), "surface " << index << " has non-finite positions");
   out.vertex_motion.resize(static_cast<size_t>(nv));
   for (int v = 0; v < nv; ++v) {
+    out.box0.extend(row(surface.x0, v));
     out.vertex_motion[v] = (row(surface.x1, v) - row(surface.x0, v)).norm();
     out.max_motion = std::max(out.max_motion, out.vertex_motion[v]);
   }
@@ -104,6 +105,12 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   for (size_t e = 0; e < out.edges.size(); ++e)
     out.edge_motion[e] = std::max(out.vertex_motion[out.edges[e][0]], out.vertex_motion[out.edges[e][1]]);
   return out;
+}
+
+bool boxes_may_interact(const PreparedSurface& a, const PreparedSurface& b, double margin) {
+  if (!a.box0.valid() || !b.box0.valid()) return false;
+  const double reach = margin + a.max_motion + b.max_motion;
+  return ((a.box0.min - b.box0.max).array() <= reach).all() && ((b.box0.min - a.box0.max).array() <= reach).all();
 }
 
 bool surfaces_interact(const PreparedSurface& a, const PreparedSurface& b) {

@@ -50,6 +50,7 @@ struct PreparedSurface {
   std::vector<double> edge_motion;            // #E
   double max_motion = 0.0;                    // over all vertices
   double length_scale = 0.0;                  // largest |coordinate|, for tolerances
+  Aabb box0;                                  // bounding box of x0
 
   int num_vertices() const { return static_cast<int>(vertex_motion.size()); }
   int num_triangles() const { return static_cast<int>(triangle_motion.size()); }
@@ -63,6 +64,10 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
 
 // The undirected edges of a triangle list as (lo, hi) vertex pairs, sorted, unique.
 std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles);
+
+// False when no pair of primitives of a and b can satisfy the candidate rule:
+// their x0 boxes, each inflated by margin/2 + its largest motion, are apart.
+bool boxes_may_interact(const PreparedSurface& a, const PreparedSurface& b, double margin);
 
 // Whether two different surfaces are tested against each other / a surface
 // against itself / a surface against planes.
