@@ -131,6 +131,29 @@ TEST(CollisionDetector, SameOutputRunAfterRunAndAtAnyThreadCount) {
   }
 }
 
+TEST(CollisionDetector, FarApartSurfacesAreCulledUnlessTheyMoveThrough) {
+  TriMesh left = icosphere(1), right = icosphere(1);
+  left.vertices *= 0.1;
+  right.vertices *= 0.1;
+  right.vertices.col(0).array() += 1.0;  // 0.8 m of free space between them
+  CollisionDetector detector({0.002, 1});
+  const std::vector<CollisionSurface> resting = {
+      moving_surface(left, 1, SurfaceKind::rigid, Eigen::Vector3d::Zero()),
+      moving_surface(right, 2, SurfaceKind::deformable, Eigen::Vector3d::Zero())};
+  EXPECT_TRUE(detector.detect(resting, {}).empty());
+  EXPECT_EQ(detector.last_stats().vertex_triangle_pairs, 0);
+  EXPECT_EQ(detector.last_stats().edge_edge_pairs, 0);
+  // The left sphere crosses the whole gap and the right sphere in one step.
+  const std::vector<CollisionSurface> flying = {
+      moving_surface(left, 1, SurfaceKind::rigid, Eigen::Vector3d(1.5, 0.01, 0)),
+      moving_surface(right, 2, SurfaceKind::deformable, Eigen::Vector3d::Zero())};
+  const auto found = detector.detect(flying, {});
+  testing::expect_same_candidates(found, brute_force_candidates(flying, {}, {0.002, 1}), 1e-9);
+  const auto with_toi = std::count_if(found.begin(), found.end(), [](const auto& c) { return c.toi.has_value(); });
+  std::cout << found.size() << " candidates for a sphere flying through another, " << with_toi << " with toi\n";
+  EXPECT_GT(with_toi, 20);
+}
+
 TEST(CollisionDetector, SelfContactSkipsNeighbours) {
   // A sheet folded over itself: two layers 1 mm apart in one deformable surface.
   TriMesh sheet = testing::grid(8, 0.01);
