@@ -138,6 +138,11 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const double distance = (p0 - closest.point).norm();
   const double motion = a.vertex_motion[vertex] + b.triangle_motion[triangle];
   if (!(distance <= margin + motion)) return std::nullopt;
+  // The same bound from the end of the step (narrow_phase.h).
+  if (motion > 0.0) {
+    const Eigen::Vector3d end = closest_point_on_triangle(p1, t1[0], t1[1], t1[2]).point;
+    if (!((p1 - end).norm() <= margin + motion)) return std::nullopt;
+  }
 
   const double tol = pair_tolerance(a, b);
   ContactCandidate c;
@@ -196,6 +201,10 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const double tol = pair_tolerance(a, b);
   const Eigen::Vector3d a0e = row(sa.x1, ea[0]), a1e = row(sa.x1, ea[1]);
   const Eigen::Vector3d b0e = row(sb.x1, eb[0]), b1e = row(sb.x1, eb[1]);
+  if (motion > 0.0) {  // the same bound from the end of the step
+    const SegmentClosestPoints end = closest_points_on_segments(a0e, a1e, b0e, b1e);
+    if (!(((a0e + end.s * (a1e - a0e)) - (b0e + end.t * (b1e - b0e))).norm() <= margin + motion)) return std::nullopt;
+  }
   std::optional<double> toi;
   if (motion > 0.0) toi = edge_edge_toi(a0, a0e, a1, a1e, b0, b0e, b1, b1e, tol + 1e-12 * motion);
   Eigen::Vector3d feature;

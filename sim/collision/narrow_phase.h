@@ -6,9 +6,12 @@
 // The candidate rule (all distances at the start of the step, x0; d(.) is how
 // far a vertex moves over the step, |x1 - x0|, maxed over a primitive's vertices):
 // - vertex v (surface A) / triangle t (surface B):
-//     dist(v, t) <= margin + d(v) + d(t)
-//   i.e. the pair may come within the margin during the step (linear motion).
-// - edge e (A) / edge f (B): dist(e, f) <= margin + d(e) + d(f), and the
+//     dist(v, t) <= margin + d(v) + d(t) at x0, and the same at x1,
+//   necessary conditions for the pair to come within the margin at some time
+//   during the step (linear motion): the distance changes by at most
+//   s (d(v) + d(t)) over a fraction s of the step. Pairs that do meet
+//   (continuous check) always pass.
+// - edge e (A) / edge f (B): dist(e, f) <= margin + d(e) + d(f) at x0 and x1, and the
 //   closest points are interior to both edges (an end point is a vertex, and
 //   that contact is already a vertex-triangle candidate with the edge as its
 //   feature), unless the continuous check found an impact.
