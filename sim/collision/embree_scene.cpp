@@ -3,7 +3,9 @@
 
 #include <embree3/rtcore.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <mutex>
 
 #include "core/check.h"
@@ -52,12 +54,35 @@ struct TriangleScene::Impl {
   RTCGeometry geometry = nullptr;
   float* vertex_buffer = nullptr;  // owned by the geometry; #V by 3 floats (+ padding)
   int num_vertices = 0;
+  double max_abs_coordinate = 0.0;  // bounds the float rounding of the stored vertices
 };
 
 namespace {
-void copy_vertices(const Points& vertices, float* buffer) {
+// Returns the largest |coordinate|, which bounds the rounding error.
+double copy_vertices(const Points& vertices, float* buffer) {
+  double max_abs = 0.0;
   for (Eigen::Index i = 0; i < vertices.rows(); ++i)
-    for (int k = 0; k < 3; ++k) buffer[3 * i + k] = static_cast<float>(vertices(i, k));
+    for (int k = 0; k < 3; ++k) {
+      buffer[3 * i + k] = static_cast<float>(vertices(i, k));
+      max_abs = std::max(max_abs, std::abs(vertices(i, k)));
+    }
+  return max_abs;
+}
+
+struct NearOutput {
+  std::vector<int>* ids;
+  bool failed = false;  // an allocation failed inside the callback
+};
+
+// Collects the primitive ids Embree offers; the exact test happens later in double.
+bool collect_primitive(RTCPointQueryFunctionArguments* args) {
+  auto* output = static_cast<NearOutput*>(args->userPtr);
+  try {
+    output->ids->push_back(static_cast<int>(args->primID));
+  } catch (...) {  // nothing may cross the C callback
+    output->failed = true;
+  }
+  return false;  // the query radius is left unchanged
 }
 }  // namespace
 
@@ -81,7 +106,7 @@ TriangleScene::TriangleScene(EmbreeDevice& device, const Points& vertices, const
       m_impl->geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(unsigned),
       static_cast<size_t>(triangles.rows())));
   device.throw_if_error("creating a triangle scene");
-  copy_vertices(vertices, m_impl->vertex_buffer);
+  m_impl->max_abs_coordinate = copy_vertices(vertices, m_impl->vertex_buffer);
   for (Eigen::Index f = 0; f < triangles.rows(); ++f)
     for (int k = 0; k < 3; ++k) index_buffer[3 * f + k] = static_cast<unsigned>(triangles(f, k));
   rtcCommitGeometry(m_impl->geometry);
@@ -97,7 +122,7 @@ TriangleScene::~TriangleScene() {
 
 void TriangleScene::update_vertices(const Points& vertices) {
   RECOIL_CHECK(vertices.rows() == m_impl->num_vertices, "vertex count changed: " << vertices.rows());
-  copy_vertices(vertices, m_impl->vertex_buffer);
+  m_impl->max_abs_coordinate = copy_vertices(vertices, m_impl->vertex_buffer);
   rtcUpdateGeometryBuffer(m_impl->geometry, RTC_BUFFER_TYPE_VERTEX, 0);
   rtcCommitGeometry(m_impl->geometry);
   rtcCommitScene(m_impl->scene);
@@ -137,6 +162,175 @@ std::vector<RayHit> TriangleScene::all_hits(const Eigen::Vector3d& origin, const
     t = std::nextafter(static_cast<float>(hit->t), std::numeric_limits<float>::infinity());
   }
   return hits;
+}
+
+void TriangleScene::triangles_near(const Eigen::Vector3d& center, double radius, std::vector<int>& out) const {
+  if (m_num_triangles == 0) return;
+  // Rounding to float moves vertices and the centre by at most half an ulp of
+  // their magnitude (~6e-8 relative); pad by a generous multiple of that.
+  const double magnitude = std::max(m_impl->max_abs_coordinate, center.cwiseAbs().maxCoeff()) + radius;
+  const double padded = radius + 1e-6 * magnitude + 1e-30;
+  RTCPointQuery query{};
+  query.x = static_cast<float>(center.x());
+  query.y = static_cast<float>(center.y());
+  query.z = static_cast<float>(center.z());
+  query.time = 0.0f;
+  query.radius = static_cast<float>(padded);
+  RTCPointQueryContext context;
+  rtcInitPointQueryContext(&context);
+  const size_t first = out.size();
+  NearOutput output{&out};
+  rtcPointQuery(m_impl->scene, &query, &context, collect_primitive, &output);
+  if (output.failed) throw Error(ErrorKind::internal, "out of memory in a point query");
+  std::sort(out.begin() + static_cast<std::ptrdiff_t>(first), out.end());
+  out.erase(std::unique(out.begin() + static_cast<std::ptrdiff_t>(first), out.end()), out.end());
+}
+
+struct BoxScene::Impl {
+  EmbreeDevice* device = nullptr;
+  RTCScene scene = nullptr;
+  RTCGeometry geometry = nullptr;
+  std::vector<RTCBounds> bounds;  // read by the bounds callback during commits
+  std::vector<std::array<int, 2>> keys;  // empty or one per box
+};
+
+namespace {
+void box_bounds(const RTCBoundsFunctionArguments* args) {
+  const auto* impl = static_cast<const BoxScene::Impl*>(args->geometryUserPtr);
+  *args->bounds_o = impl->bounds[args->primID];
+}
+
+float round_down(double x) {
+  float f = static_cast<float>(x);
+  return static_cast<double>(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+float round_up(double x) {
+  float f = static_cast<float>(x);
+  return static_cast<double>(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+bool overlap(const RTCBounds& a, const RTCBounds& b) {
+  return a.lower_x <= b.upper_x && b.lower_x <= a.upper_x && a.lower_y <= b.upper_y && b.lower_y <= a.upper_y &&
+         a.lower_z <= b.upper_z && b.lower_z <= a.upper_z;
+}
+
+struct CollideOutput {
+  const BoxScene::Impl* scene0;
+  const BoxScene::Impl* scene1;
+  std::mutex mutex;  // Embree may call back from several threads
+  std::vector<std::pair<int, int>> pairs;
+  bool failed = false;  // an allocation failed inside the callback
+};
+
+void append_overlaps(CollideOutput& output, const RTCCollision* collisions, unsigned int count) {
+  const bool self = output.scene0 == output.scene1;
+  const std::vector<std::array<int, 2>>& keys = output.scene0->keys;
+  // Filter outside the lock; only the survivors are appended under it.
+  thread_local std::vector<std::pair<int, int>> kept;
+  kept.clear();
+  for (unsigned int k = 0; k < count; ++k) {
+    unsigned i = collisions[k].primID0, j = collisions[k].primID1;
+    if (self) {
+      // Each unordered pair once as (lo, hi), whichever order Embree used.
+      if (i == j) continue;
+      if (i > j) std::swap(i, j);
+      if (!keys.empty() && (keys[i][0] == keys[j][0] || keys[i][0] == keys[j][1] || keys[i][1] == keys[j][0] ||
+                            keys[i][1] == keys[j][1]))
+        continue;
+    }
+    // Embree reports leaf-box pairs: keep the pairs whose own boxes overlap.
+    if (overlap(output.scene0->bounds[i], output.scene1->bounds[j]))
+      kept.emplace_back(static_cast<int>(i), static_cast<int>(j));
+  }
+  std::lock_guard<std::mutex> lock(output.mutex);
+  output.pairs.insert(output.pairs.end(), kept.begin(), kept.end());
+}
+
+// Sorts (i, j) pairs of non-negative ints and drops repeats: an LSD radix
+// sort on 64-bit keys, much faster than std::sort for the millions of pairs
+// a fine self-colliding surface produces.
+void sort_unique_pairs(std::vector<std::pair<int, int>>& pairs) {
+  std::vector<std::uint64_t> keys(pairs.size()), scratch(pairs.size());
+  for (size_t k = 0; k < pairs.size(); ++k)
+    keys[k] = (static_cast<std::uint64_t>(pairs[k].first) << 32) | static_cast<std::uint32_t>(pairs[k].second);
+  for (int shift = 0; shift < 64; shift += 16) {
+    std::vector<size_t> offset(65537, 0);
+    for (std::uint64_t key : keys) ++offset[((key >> shift) & 0xFFFF) + 1];
+    if (offset[1] == keys.size()) continue;  // all in bucket 0: this digit is already sorted
+    for (size_t b = 1; b < offset.size(); ++b) offset[b] += offset[b - 1];
+    for (std::uint64_t key : keys) scratch[offset[(key >> shift) & 0xFFFF]++] = key;
+    keys.swap(scratch);
+  }
+  keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
+  pairs.resize(keys.size());
+  for (size_t k = 0; k < keys.size(); ++k)
+    pairs[k] = {static_cast<int>(keys[k] >> 32), static_cast<int>(keys[k] & 0xFFFFFFFFu)};
+}
+
+void collect_collisions(void* user, RTCCollision* collisions, unsigned int count) {
+  auto* output = static_cast<CollideOutput*>(user);
+  try {
+    append_overlaps(*output, collisions, count);
+  } catch (...) {  // nothing may cross the C callback
+    std::lock_guard<std::mutex> lock(output->mutex);
+    output->failed = true;
+  }
+}
+}  // namespace
+
+BoxScene::BoxScene(EmbreeDevice& device) : m_impl(std::make_unique<Impl>()) {
+  m_impl->device = &device;
+  m_impl->scene = rtcNewScene(device.impl().device);
+  rtcSetSceneFlags(m_impl->scene, RTC_SCENE_FLAG_DYNAMIC);
+  rtcSetSceneBuildQuality(m_impl->scene, RTC_BUILD_QUALITY_LOW);
+  m_impl->geometry = rtcNewGeometry(device.impl().device, RTC_GEOMETRY_TYPE_USER);
+  rtcSetGeometryBuildQuality(m_impl->geometry, RTC_BUILD_QUALITY_REFIT);
+  rtcSetGeometryUserPrimitiveCount(m_impl->geometry, 0);
+  rtcSetGeometryUserData(m_impl->geometry, m_impl.get());
+  rtcSetGeometryBoundsFunction(m_impl->geometry, box_bounds, nullptr);
+  rtcCommitGeometry(m_impl->geometry);
+  rtcAttachGeometryByID(m_impl->scene, m_impl->geometry, 0);
+  rtcCommitScene(m_impl->scene);
+  device.throw_if_error("creating a box scene");
+}
+
+BoxScene::~BoxScene() {
+  if (m_impl->geometry) rtcReleaseGeometry(m_impl->geometry);
+  if (m_impl->scene) rtcReleaseScene(m_impl->scene);
+}
+
+int BoxScene::num_boxes() const { return static_cast<int>(m_impl->bounds.size()); }
+
+void BoxScene::set_boxes(const std::vector<Aabb>& boxes, std::vector<std::array<int, 2>> keys) {
+  RECOIL_CHECK(keys.empty() || keys.size() == boxes.size(), keys.size() << " keys for " << boxes.size() << " boxes");
+  m_impl->keys = std::move(keys);
+  const bool same_count = boxes.size() == m_impl->bounds.size();
+  m_impl->bounds.resize(boxes.size());
+  for (size_t i = 0; i < boxes.size(); ++i) {
+    RECOIL_CHECK(boxes[i].valid(), "box " << i << " is empty or NaN");
+    RTCBounds& b = m_impl->bounds[i];
+    b.lower_x = round_down(boxes[i].min.x());
+    b.lower_y = round_down(boxes[i].min.y());
+    b.lower_z = round_down(boxes[i].min.z());
+    b.upper_x = round_up(boxes[i].max.x());
+    b.upper_y = round_up(boxes[i].max.y());
+    b.upper_z = round_up(boxes[i].max.z());
+    b.align0 = b.align1 = 0.0f;
+  }
+  if (!same_count) rtcSetGeometryUserPrimitiveCount(m_impl->geometry, static_cast<unsigned>(boxes.size()));
+  rtcCommitGeometry(m_impl->geometry);
+  rtcCommitScene(m_impl->scene);
+  m_impl->device->throw_if_error("building a box scene");
+}
+
+std::vector<std::pair<int, int>> BoxScene::overlapping_pairs(const BoxScene& other) const {
+  CollideOutput output{m_impl.get(), other.m_impl.get(), {}, {}, false};
+  if (m_impl->bounds.empty() || other.m_impl->bounds.empty()) return {};
+  rtcCollide(m_impl->scene, other.m_impl->scene, collect_collisions, &output);
+  m_impl->device->throw_if_error("rtcCollide on box scenes");
+  if (output.failed) throw Error(ErrorKind::internal, "out of memory in rtcCollide");
+  sort_unique_pairs(output.pairs);
+  return std::move(output.pairs);
 }
 
 }  // namespace recoil::sim

@@ -8,9 +8,19 @@
 //
 // TriangleScene: one triangle surface in its own Embree scene. Dynamic scenes
 // (collision surfaces of moving bodies) are refitted with update_vertices().
+//
+// BoxScene: axis-aligned boxes as an Embree user geometry, for box-pair
+// overlap queries (rtcCollide) such as the edge-edge broad phase.
+//
+// Embree works in float: every query here is conservative (boxes rounded
+// outward, query spheres padded) and callers filter the results exactly in
+// double precision.
+#include <array>
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "sim/geometry/tri_mesh.h"
 
@@ -61,6 +71,11 @@ class TriangleScene {
   // Used for inside/outside parity tests.
   std::vector<RayHit> all_hits(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction) const;
 
+  // Appends to `out` the ids of every triangle within `radius` of `center`
+  // (a superset: Embree culls with float boxes, padded here for rounding),
+  // sorted and without repeats. Safe to call from several threads at once.
+  void triangles_near(const Eigen::Vector3d& center, double radius, std::vector<int>& out) const;
+
   int num_triangles() const { return m_num_triangles; }
 
   struct Impl;
@@ -70,6 +85,31 @@ class TriangleScene {
  private:
   std::unique_ptr<Impl> m_impl;
   int m_num_triangles = 0;
+};
+
+class BoxScene {
+ public:
+  explicit BoxScene(EmbreeDevice& device);
+  ~BoxScene();
+  BoxScene(const BoxScene&) = delete;
+  BoxScene& operator=(const BoxScene&) = delete;
+
+  // Replaces the boxes (each rounded outward to float). The BVH is refitted
+  // when the count is unchanged and rebuilt otherwise. `keys` (empty, or one
+  // pair per box) only matter for self queries: two boxes with a key in common
+  // are never paired (edges that share a vertex, say).
+  void set_boxes(const std::vector<Aabb>& boxes, std::vector<std::array<int, 2>> keys = {});
+  int num_boxes() const;
+
+  // Every pair (i in this scene, j in `other`) whose float boxes overlap
+  // (touching counts), sorted and unique. With other == *this: each pair of
+  // different boxes without a common key once, as (i, j) with i < j.
+  std::vector<std::pair<int, int>> overlapping_pairs(const BoxScene& other) const;
+
+  struct Impl;
+
+ private:
+  std::unique_ptr<Impl> m_impl;
 };
 
 }  // namespace recoil::sim

@@ -1,0 +1,173 @@
+#include "sim/collision/collision_detector.h"
+
+#include <algorithm>
+#include <exception>
+#include <functional>
+#include <thread>
+
+#include "core/check.h"
+#include "sim/collision/embree_scene.h"
+#include "sim/collision/narrow_phase.h"
+
+namespace recoil::sim {
+
+struct CollisionDetector::Impl {
+  struct SurfaceScenes {
+    Triangles triangles;  // the topology the scenes were built for
+    std::vector<std::array<int, 2>> edges;  // unique_edges(triangles)
+    std::unique_ptr<TriangleScene> faces;
+    std::unique_ptr<BoxScene> edge_boxes;  // keyed by the edges' vertices for self queries
+  };
+  EmbreeDevice device;
+  std::vector<SurfaceScenes> scenes;
+};
+
+namespace {
+
+using Chunk = std::function<void(size_t begin, size_t end, std::vector<ContactCandidate>& out)>;
+
+// Runs `work` on contiguous chunks of [0, n) on up to `threads` threads and
+// concatenates the outputs in chunk order (the caller sorts at the end anyway).
+void parallel_chunks(size_t n, int threads, const Chunk& work, std::vector<ContactCandidate>& out) {
+  const size_t count = std::min<size_t>(static_cast<size_t>(std::max(threads, 1)), std::max<size_t>(n / 256, 1));
+  if (count <= 1) {
+    work(0, n, out);
+    return;
+  }
+  std::vector<std::vector<ContactCandidate>> parts(count);
+  std::vector<std::exception_ptr> errors(count);
+  std::vector<std::thread> pool;
+  for (size_t c = 0; c < count; ++c)
+    pool.emplace_back([&, c] {
+      try {
+        work(n * c / count, n * (c + 1) / count, parts[c]);
+      } catch (...) {
+        errors[c] = std::current_exception();
+      }
+    });
+  for (std::thread& t : pool) t.join();
+  for (const std::exception_ptr& e : errors)
+    if (e) std::rethrow_exception(e);
+  for (auto& part : parts) out.insert(out.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
+}
+
+std::vector<Aabb> edge_boxes(const PreparedSurface& s, double margin) {
+  std::vector<Aabb> boxes(s.edges.size());
+  for (size_t e = 0; e < s.edges.size(); ++e) {
+    const Eigen::Vector3d p = s.surface->x0.row(s.edges[e][0]).transpose();
+    const Eigen::Vector3d q = s.surface->x0.row(s.edges[e][1]).transpose();
+    const Eigen::Vector3d pad = Eigen::Vector3d::Constant(0.5 * margin + s.edge_motion[e]);
+    boxes[e].min = p.cwiseMin(q) - pad;
+    boxes[e].max = p.cwiseMax(q) + pad;
+  }
+  return boxes;
+}
+
+}  // namespace
+
+CollisionDetector::CollisionDetector(CollisionSettings settings)
+    : m_settings(settings), m_impl(std::make_unique<Impl>()) {
+  RECOIL_CHECK(settings.margin >= 0.0 && std::isfinite(settings.margin), "margin=" << settings.margin);
+}
+
+CollisionDetector::~CollisionDetector() = default;
+
+std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<CollisionSurface>& surfaces,
+                                                        const std::vector<CollisionPlane>& planes) {
+  m_stats = {};
+  const double margin = m_settings.margin;
+  const int threads = m_settings.num_threads;
+  // Refit (same triangles as last call) or rebuild each surface's scenes.
+  std::vector<PreparedSurface> prepared;
+  prepared.reserve(surfaces.size());
+  m_impl->scenes.resize(surfaces.size());
+  for (size_t i = 0; i < surfaces.size(); ++i) {
+    Impl::SurfaceScenes& sc = m_impl->scenes[i];
+    const CollisionSurface& s = surfaces[i];
+    if (s.triangles.rows() == 0) {
+      sc = {};
+      prepared.push_back(prepare_surface(s, static_cast<int>(i)));
+      continue;
+    }
+    const bool same = sc.faces && sc.triangles.rows() == s.triangles.rows() && sc.triangles == s.triangles;
+    if (!same) sc.edges = unique_edges(s.triangles);
+    // Validates the surface before Embree sees it.
+    prepared.push_back(prepare_surface(s, static_cast<int>(i), &sc.edges));
+    if (same) {
+      sc.faces->update_vertices(s.x0);
+    } else {
+      sc.triangles = s.triangles;
+      sc.faces = std::make_unique<TriangleScene>(m_impl->device, s.x0, s.triangles, /*dynamic=*/true);
+      sc.edge_boxes = std::make_unique<BoxScene>(m_impl->device);
+      ++m_stats.rebuilt_surfaces;
+    }
+    sc.edge_boxes->set_boxes(edge_boxes(prepared[i], margin), self_interacts(prepared[i])
+                                                                  ? sc.edges
+                                                                  : std::vector<std::array<int, 2>>{});
+  }
+
+  std::vector<ContactCandidate> out;
+  auto vertices_against_triangles = [&](const PreparedSurface& a, const PreparedSurface& b) {
+    const TriangleScene* scene = m_impl->scenes[b.index].faces.get();
+    if (!scene) return;
+    std::vector<long long> counts(static_cast<size_t>(a.num_vertices()), 0);
+    parallel_chunks(static_cast<size_t>(a.num_vertices()), threads,
+                    [&](size_t begin, size_t end, std::vector<ContactCandidate>& part) {
+                      std::vector<int> near;
+                      for (size_t v = begin; v < end; ++v) {
+                        near.clear();
+                        const int vi = static_cast<int>(v);
+                        const Eigen::Vector3d p = a.surface->x0.row(vi).transpose();
+                        const double radius = margin + a.vertex_motion[v] + b.max_motion;
+                        // Farther than `radius` from all of B (its box) is never a candidate.
+                        const Eigen::Vector3d outside =
+                            (b.box0.min - p).cwiseMax(p - b.box0.max).cwiseMax(0.0);
+                        if (outside.norm() > radius) continue;
+                        scene->triangles_near(p, radius, near);
+                        counts[v] = static_cast<long long>(near.size());
+                        for (int t : near)
+                          if (auto c = test_vertex_triangle(a, vi, b, t, margin)) part.push_back(std::move(*c));
+                      }
+                    },
+                    out);
+    for (long long c : counts) m_stats.vertex_triangle_pairs += c;
+  };
+  auto edges_against_edges = [&](const PreparedSurface& a, const PreparedSurface& b) {
+    const Impl::SurfaceScenes& sa = m_impl->scenes[a.index];
+    const Impl::SurfaceScenes& sb = m_impl->scenes[b.index];
+    if (!sa.edge_boxes || !sb.edge_boxes) return;
+    // Self: each unordered pair once, (lo, hi), as test_edge_edge requires.
+    const std::vector<std::pair<int, int>> pairs = sa.edge_boxes->overlapping_pairs(*sb.edge_boxes);
+    m_stats.edge_edge_pairs += static_cast<long long>(pairs.size());
+    parallel_chunks(pairs.size(), threads,
+                    [&](size_t begin, size_t end, std::vector<ContactCandidate>& part) {
+                      for (size_t k = begin; k < end; ++k)
+                        if (auto c = test_edge_edge(a, pairs[k].first, b, pairs[k].second, margin))
+                          part.push_back(std::move(*c));
+                    },
+                    out);
+  };
+
+  for (size_t i = 0; i < prepared.size(); ++i) {
+    const PreparedSurface& a = prepared[i];
+    for (size_t j = i + 1; j < prepared.size(); ++j) {
+      const PreparedSurface& b = prepared[j];
+      if (!surfaces_interact(a, b) || !boxes_may_interact(a, b, margin)) continue;
+      vertices_against_triangles(a, b);
+      vertices_against_triangles(b, a);
+      edges_against_edges(a, b);
+    }
+    if (self_interacts(a)) {
+      vertices_against_triangles(a, a);
+      edges_against_edges(a, a);
+    }
+    if (interacts_with_planes(a))
+      for (size_t k = 0; k < planes.size(); ++k)
+        for (int v = 0; v < a.num_vertices(); ++v)
+          if (auto c = test_vertex_plane(a, v, planes[k], static_cast<int>(k), margin)) out.push_back(std::move(*c));
+  }
+  finalize_candidates(out);
+  return out;
+}
+
+}  // namespace recoil::sim

@@ -1,0 +1,94 @@
+#pragma once
+// The exact (double precision) half of collision detection, shared by the
+// Embree detector and the brute-force oracle so that both define the same
+// candidate set; they differ only in which pairs they offer to these tests.
+//
+// The candidate rule (all distances at the start of the step, x0; d(.) is how
+// far a vertex moves over the step, |x1 - x0|, maxed over a primitive's vertices):
+// - vertex v (surface A) / triangle t (surface B):
+//     dist(v, t) <= margin + d(v) + d(t) at x0, and the same at x1,
+//   necessary conditions for the pair to come within the margin at some time
+//   during the step (linear motion): the distance changes by at most
+//   s (d(v) + d(t)) over a fraction s of the step. Pairs that do meet
+//   (continuous check) always pass.
+// - edge e (A) / edge f (B): dist(e, f) <= margin + d(e) + d(f) at x0 and x1, and the
+//   closest points are interior to both edges (an end point is a vertex, and
+//   that contact is already a vertex-triangle candidate with the edge as its
+//   feature), unless the continuous check found an impact.
+// - vertex v / plane: min(signed distance at x0, at x1) <= margin.
+// Self-contact drops a vertex against the triangles of its one-ring and
+// edges sharing a vertex. Pairs of two prescribed (static or kinematic)
+// surfaces, and prescribed surfaces against planes, are never tested.
+//
+// Closest-point weights: a vertex-triangle closest point on an edge or vertex
+// of the triangle has exact zero weights elsewhere, and finalize_candidates()
+// keeps one candidate per (vertex, feature): touching a mesh vertex shared by
+// six triangles gives one contact, not six. Between two surfaces both
+// directions are searched, so two vertices meeting (corner on corner) appear
+// once as A's vertex against B's vertex feature and once the other way round;
+// the two rows are the same constraint and the contact code may merge them.
+//
+// Normal (from q on B to p on A): (p - q)/|p - q| while the points are apart
+// (so the gap is the distance, >= 0, and open or thin surfaces work from both
+// sides). At an impact found by the continuous check: the face normal
+// (vertex-triangle) or the cross product of the edges (edge-edge) at the
+// impact, turned towards the side p started on. When they already touch at
+// the start, that side is unknown: a face normal keeps its outward sign
+// (counter-clockwise triangles; A is assumed outside B), an edge cross product
+// is turned against the relative motion. Degenerate features fall back to
+// the direction of p - q, then the reversed relative motion, finally +z.
+#include <vector>
+
+#include "sim/collision/collision_types.h"
+
+namespace recoil::sim {
+
+// Per-surface data derived once per step: motions, edges, adjacency.
+struct PreparedSurface {
+  const CollisionSurface* surface = nullptr;
+  int index = -1;                             // position in the detector's input
+  std::vector<double> vertex_motion;          // #V, |x1 - x0|
+  std::vector<double> triangle_motion;        // #F, max over its vertices
+  std::vector<std::array<int, 2>> edges;      // #E, (lo, hi), sorted, unique
+  std::vector<double> edge_motion;            // #E
+  double max_motion = 0.0;                    // over all vertices
+  double length_scale = 0.0;                  // largest |coordinate|, for tolerances
+  Aabb box0;                                  // bounding box of x0
+
+  int num_vertices() const { return static_cast<int>(vertex_motion.size()); }
+  int num_triangles() const { return static_cast<int>(triangle_motion.size()); }
+  int num_edges() const { return static_cast<int>(edges.size()); }
+};
+
+// Checks shapes and indices (a mismatch is a caller bug: RECOIL_CHECK).
+// `edges`, if given, is unique_edges(surface.triangles) from an earlier step.
+PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
+                                const std::vector<std::array<int, 2>>* edges = nullptr);
+
+// The undirected edges of a triangle list as (lo, hi) vertex pairs, sorted, unique.
+std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles);
+
+// False when no pair of primitives of a and b can satisfy the candidate rule:
+// their x0 boxes, each inflated by margin/2 + its largest motion, are apart.
+bool boxes_may_interact(const PreparedSurface& a, const PreparedSurface& b, double margin);
+
+// Whether two different surfaces are tested against each other / a surface
+// against itself / a surface against planes.
+bool surfaces_interact(const PreparedSurface& a, const PreparedSurface& b);
+bool self_interacts(const PreparedSurface& a);
+bool interacts_with_planes(const PreparedSurface& a);
+
+// The exact tests; each returns a candidate if the pair satisfies the rule.
+// For self-contact pass the same surface twice; edge_edge then needs ea < eb.
+std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, int vertex, const PreparedSurface& b,
+                                                     int triangle, double margin);
+std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edge_a, const PreparedSurface& b,
+                                               int edge_b, double margin);
+std::optional<ContactCandidate> test_vertex_plane(const PreparedSurface& a, int vertex, const CollisionPlane& plane,
+                                                  int plane_index, double margin);
+
+// Keeps one vertex-triangle candidate per (vertex, triangle feature) -- the
+// earliest impact, then the lowest triangle id -- and sorts with candidate_less.
+void finalize_candidates(std::vector<ContactCandidate>& candidates);
+
+}  // namespace recoil::sim
