@@ -1,12 +1,12 @@
 #pragma once
-// Small meshes and poses for the collision tests and benchmarks (independent
-// of sim/geometry/primitives, which lands separately on main). Header-only so
-// that tests/bench can use it too.
+// Small meshes and poses for the collision tests and benchmarks. Header-only
+// so that tests/bench can use it too; spheres come from sim/geometry/primitives.
 #include <Eigen/Geometry>
 #include <map>
 #include <random>
 
 #include "sim/collision/collision_types.h"
+#include "sim/geometry/primitives.h"
 
 namespace recoil::sim::testing {
 
@@ -16,42 +16,7 @@ namespace recoil::sim::testing {
 // moving_surface: x1 is x0 rotated about its centroid, then translated.
 
 
-inline TriMesh icosphere(int subdivisions) {
-  const double t = (1.0 + std::sqrt(5.0)) / 2.0;
-  std::vector<Eigen::Vector3d> v = {{-1, t, 0}, {1, t, 0},  {-1, -t, 0}, {1, -t, 0}, {0, -1, t},  {0, 1, t},
-                                    {0, -1, -t}, {0, 1, -t}, {t, 0, -1},  {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
-  std::vector<std::array<int, 3>> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
-                                       {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
-                                       {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
-                                       {4, 9, 5},  {2, 4, 11}, {6, 2, 10},  {8, 6, 7},  {9, 8, 1}};
-  for (auto& p : v) p.normalize();
-  for (int s = 0; s < subdivisions; ++s) {
-    std::map<std::pair<int, int>, int> midpoint;
-    auto mid = [&](int a, int b) {
-      const auto key = std::minmax(a, b);
-      auto it = midpoint.find(key);
-      if (it != midpoint.end()) return it->second;
-      v.push_back((v[a] + v[b]).normalized());
-      return midpoint[key] = static_cast<int>(v.size()) - 1;
-    };
-    std::vector<std::array<int, 3>> next;
-    for (const auto& tri : f) {
-      const int a = mid(tri[0], tri[1]), b = mid(tri[1], tri[2]), c = mid(tri[2], tri[0]);
-      next.push_back({tri[0], a, c});
-      next.push_back({tri[1], b, a});
-      next.push_back({tri[2], c, b});
-      next.push_back({a, b, c});
-    }
-    f = std::move(next);
-  }
-  TriMesh m;
-  m.vertices.resize(static_cast<Eigen::Index>(v.size()), 3);
-  for (size_t i = 0; i < v.size(); ++i) m.vertices.row(static_cast<Eigen::Index>(i)) = v[i].transpose();
-  m.triangles.resize(static_cast<Eigen::Index>(f.size()), 3);
-  for (size_t i = 0; i < f.size(); ++i)
-    m.triangles.row(static_cast<Eigen::Index>(i)) << f[i][0], f[i][1], f[i][2];
-  return m;
-}
+inline TriMesh icosphere(int subdivisions) { return make_sphere(1.0, subdivisions); }
 
 inline TriMesh box(const Eigen::Vector3d& h) {
   TriMesh m;
