@@ -13,17 +13,12 @@
 #include "sim/fem/block_sparse.h"
 #include "sim/fem/deformable_body.h"
 #include "sim/fem/pcg.h"
+#include "sim/world_desc.h"
 
 namespace recoil::sim {
 
 class EmbreeDevice;
 
-struct WorldDesc {
-  double dt = 0.004;                                           // s
-  Eigen::Vector3d gravity = Eigen::Vector3d(0.0, -9.81, 0.0);  // m/s^2
-  PcgSettings solver;
-  std::vector<DeformableBodyDesc> bodies;
-};
 
 enum class StepStatus { ok, nan, inverted, energy_blowup };
 const char* to_string(StepStatus status);
@@ -31,7 +26,8 @@ const char* to_string(StepStatus status);
 // Wall-clock milliseconds per stage of the last step.
 struct Profile {
   double assemble = 0.0;
-  double solve = 0.0;
+  double collide = 0.0;    // candidate search, including mid-solve new-collision checks
+  double solve = 0.0;      // linear solve or contact solve
   double integrate = 0.0;
   double health = 0.0;
   double total = 0.0;
@@ -46,6 +42,11 @@ struct StepReport {
   double solver_residual = 0.0;
   bool solver_converged = true;
   int inverted_tets = 0;       // over all bodies
+  // Contact stage (zero without candidates); SPEC.md section 4 sums these per frame.
+  int contacts = 0;            // constraint candidates given to the solver
+  int active = 0, sticking = 0, sliding = 0;
+  int solver_restarts = 0;
+  double max_penetration = 0.0;  // m, largest over contacts after the step (>= 0)
   Profile profile;
 };
 
@@ -58,8 +59,11 @@ struct WorldCounters {
   long energy_blowup_steps = 0;
 };
 
+enum class BodyKind { deformable, rigid, kinematic, fixed };
+
 struct BodySurface {
   std::string name;
+  BodyKind kind = BodyKind::deformable;
   Points positions;     // #V by 3, world space, current
   Triangles triangles;  // #F by 3
 };
@@ -86,7 +90,9 @@ class World {
 
   StepReport step();
 
+  // Every mesh body (deformable, then rigid/kinematic/fixed), in description order; planes are not included.
   std::vector<BodySurface> surfaces() const;
+  // Dynamic bodies (deformable, then rigid), in description order.
   std::vector<BodyStats> stats() const;
   const WorldCounters& counters() const { return m_counters; }
 

@@ -43,6 +43,10 @@ struct DeformableBodyDesc {
   Transform transform;
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s, initial, every node
   std::optional<PinBox> pinned;
+  // Contact (consumed by the World's contact stage).
+  double static_friction = 0.5;   // see FrictionDesc in sim/world_desc.h
+  double kinetic_friction = 0.5;
+  bool self_contact = true;
 };
 
 struct DeformableBody {

@@ -1,0 +1,105 @@
+#pragma once
+// The contact solver's view of one time step (METHOD.md sections 2-5): the
+// unconstrained implicit-Euler system A dv = b and, per contact, a block of
+// three constraint rows. The solver sees matrices and rows, never bodies;
+// sim/contact builds the rows from collision candidates (embedding weights
+// for deformable bodies, v + w x r for rigid ones) and re-linearises them.
+//
+// Conventions (every part of the code relies on them):
+// - DoFs come in nodes of 3: a deformable node's velocity, or a rigid body's
+//   linear velocity node and angular velocity node (A holds m I and the
+//   world inertia tensor as their 3x3 diagonal blocks).
+// - Contact k's rows J_k (3 by #DoF): row 0 is the normal (J_n dv grows the
+//   gap), rows 1-2 the tangents t1, t2 of an orthonormal basis.
+// - Non-penetration: J_n dv >= rhs_normal, multiplier lambda >= 0.
+// - Sticking: J_t dv = rhs_tangent, multiplier gamma in R^2, valid while
+//   |gamma| <= mu_static * lambda.
+// - Sliding: no tangent rows; a known impulse -mu_kinetic * lambda' * slip
+//   enters the right-hand side, with `slip` the unit direction of the
+//   tangential slip J_t dv - rhs_tangent.
+// - The impulses applied to the DoFs: A dv = b + sum_k J_k^T f_k with
+//   f_k = [lambda, gamma] (sticking) or [lambda, -mu_kinetic lambda' slip]
+//   (sliding), f_k = 0 when inactive.
+#include <Eigen/Core>
+#include <cstdint>
+#include <vector>
+
+#include "sim/fem/block_sparse.h"
+
+namespace recoil::sim {
+
+// One contact's three rows restricted to the DoF nodes it touches:
+// J_k dv = sum_i blocks[i] * dv.segment<3>(3 * nodes[i]).
+struct ContactRows {
+  std::vector<int> nodes;                 // DoF nodes, ascending, unique; fixed (pinned) nodes left out
+  std::vector<Eigen::Matrix3d> blocks;    // one per node: row 0 normal, rows 1-2 tangent coefficients
+  double rhs_normal = 0.0;                // m/s: J_n dv >= rhs_normal
+  Eigen::Vector2d rhs_tangent = Eigen::Vector2d::Zero();  // m/s: J_t dv = rhs_tangent while sticking
+  double mu_static = 0.5;
+  double mu_kinetic = 0.5;
+};
+
+enum class ContactMode : std::uint8_t { inactive, sticking, sliding };
+
+// Multipliers and friction state of one contact; carried from step to step
+// by the caller for the warm start (METHOD.md section 3, step 3).
+struct ContactState {
+  ContactMode mode = ContactMode::inactive;
+  double lambda = 0.0;                                 // normal impulse, N s, >= 0
+  Eigen::Vector2d gamma = Eigen::Vector2d::Zero();     // sticking impulse in (t1, t2), N s
+  double lambda_kinetic = 0.0;                         // lambda', N s: what sliding friction is based on
+  Eigen::Vector2d slip = Eigen::Vector2d::Zero();      // unit slip direction in (t1, t2); friction opposes it
+};
+
+struct ContactProblem {
+  const BlockSparseMatrix* A = nullptr;  // #DoF by #DoF, SPD; fixed nodes are identity rows with b = 0
+  Eigen::VectorXd b;                     // #DoF
+  std::vector<ContactRows> rows;         // one per contact
+  std::vector<ContactState> states;      // same size as rows: in, the warm start; out, the solution
+};
+
+enum class SolverMethod { cr, cr_plain, pgs };
+const char* to_string(SolverMethod method);
+
+struct ContactSolverSettings {
+  SolverMethod method = SolverMethod::cr;
+  double tolerance = 1e-6;   // epsilon_1 on the (preconditioned) residual
+  int max_iterations = 5000; // cap over the whole solve, restarts included
+  int max_flips = 8;         // state changes per contact per solve before its state is frozen
+};
+
+struct ContactSolverStats {
+  int iterations = 0;
+  int restarts = 0;            // CR restarts (active-set changes, breakdowns)
+  int relinearizations = 0;
+  int new_contacts = 0;        // added by the mid-solve new-collision check
+  double residual = 0.0;       // final true residual |d - B y|, same units as the tolerance
+  bool converged = true;       // false: the iteration cap was hit
+  int active = 0;              // active contacts at the end
+  int sticking = 0;
+  int sliding = 0;
+  double ms = 0.0;             // wall-clock
+};
+
+// What the solver calls back, once converged, for Algorithm 1's outer loop:
+// implemented by sim/contact for the World. Both functions may change the
+// rows (never the node layout), so the solver recomputes its residual after.
+class ContactLinearization {
+ public:
+  virtual ~ContactLinearization() = default;
+  // Appends rows and inactive states for candidates that come into contact
+  // at the predicted positions x* = x + h (v + dv) and are not in `problem`
+  // yet. Returns how many were added.
+  virtual int add_new_contacts(const Eigen::VectorXd& dv, ContactProblem& problem) = 0;
+  // Recomputes every contact's normal, tangents, rows and right-hand sides
+  // at x*, holding the contact weights (METHOD.md section 4). Returns the
+  // largest change of any right-hand side, m/s.
+  virtual double relinearize(const Eigen::VectorXd& dv, ContactProblem& problem) = 0;
+};
+
+// Solves the step's mixed complementarity problem for dv (#DoF, resized).
+// `linearization` may be null (a fixed set of rows, as in the solver tests).
+ContactSolverStats solve_contacts(ContactProblem& problem, const ContactSolverSettings& settings,
+                                  Eigen::VectorXd& dv, ContactLinearization* linearization = nullptr);
+
+}  // namespace recoil::sim

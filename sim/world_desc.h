@@ -1,0 +1,64 @@
+#pragma once
+// WorldDesc: the plain description a World is built from (Box2D-style
+// definition structs with defaults). The scene parser in cli/ fills it; tests
+// and benchmarks build it directly. SPEC.md section 3 is the user-facing form.
+#include <Eigen/Core>
+#include <string>
+#include <vector>
+
+#include "sim/fem/deformable_body.h"
+#include "sim/fem/pcg.h"
+#include "sim/geometry/tri_mesh.h"
+#include "sim/solver/contact_problem.h"
+
+namespace recoil::sim {
+
+// SPEC.md `friction`: the coefficient between two bodies is the geometric
+// mean of theirs (static with static, kinetic with kinetic).
+struct FrictionDesc {
+  double static_coefficient = 0.5;
+  double kinetic_coefficient = 0.5;
+};
+
+// An infinite static plane; the render draws it as the ground.
+struct PlaneDesc {
+  std::string name = "ground";
+  Eigen::Vector3d point = Eigen::Vector3d::Zero();    // m
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  // outside is normal.(x - point) > 0; normalised on use
+  FrictionDesc friction;
+};
+
+// Bodies that move as a whole. `dynamic` bodies have 6 DoF (mass and inertia
+// from their closed surface and density); `kinematic` ones follow a scripted
+// constant velocity and angular velocity about transform.position; `fixed`
+// ones (SPEC type "static") never move.
+enum class RigidMotion { dynamic, kinematic, fixed };
+
+struct RigidBodyDesc {
+  std::string name = "rigid";
+  RigidMotion motion = RigidMotion::dynamic;
+  TriMesh mesh;                 // surface in local coordinates (closed for dynamic bodies)
+  Transform transform;          // local -> world at time 0
+  double density = 1000.0;      // kg/m^3, dynamic only
+  FrictionDesc friction;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // m/s, world: initial (dynamic) or constant (kinematic)
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world, same
+};
+
+struct ContactSettings {
+  double margin = 0.002;        // m: candidates closer than this (plus their motion) enter the solver
+  ContactSolverSettings solver;
+  int num_threads = 1;          // collision queries; results identical for any value
+};
+
+struct WorldDesc {
+  double dt = 0.004;                                           // s
+  Eigen::Vector3d gravity = Eigen::Vector3d(0.0, -9.81, 0.0);  // m/s^2
+  PcgSettings solver;            // the linear solve of a step without active contacts
+  ContactSettings contact;
+  std::vector<DeformableBodyDesc> bodies;   // deformable bodies
+  std::vector<RigidBodyDesc> rigid_bodies;  // dynamic, kinematic and fixed rigid bodies
+  std::vector<PlaneDesc> planes;
+};
+
+}  // namespace recoil::sim
