@@ -63,9 +63,15 @@ const char* to_string(SolverMethod method);
 
 struct ContactSolverSettings {
   SolverMethod method = SolverMethod::cr;
-  double tolerance = 1e-6;   // epsilon_1 on the (preconditioned) residual
+  double tolerance = 1e-6;   // epsilon_1 on the (preconditioned) residual; cr/cr_plain: the 2-norm of
+                             // the residual scaled to m/s (momentum rows by P_A^-1, multiplier rows by
+                             // diag(J P_A^-1 J^T)); pgs: the largest impulse change per sweep, in m/s
   int max_iterations = 5000; // cap over the whole solve, restarts included
   int max_flips = 8;         // state changes per contact per solve before its state is frozen
+  // Added with the solvers (sim/solver/constraint_evaluation.h):
+  double constraint_tolerance = 1e-6;  // epsilon_2, m/s: smallest accepted change of a contact, and
+                                       // the bound on each constraint row's residual at convergence
+  int max_relinearizations = 16;       // relinearize calls per solve
 };
 
 struct ContactSolverStats {
@@ -79,6 +85,8 @@ struct ContactSolverStats {
   int sticking = 0;
   int sliding = 0;
   double ms = 0.0;             // wall-clock
+  // Added with the solvers: the common accuracy measure (sim/solver/kkt_residual.h), m/s.
+  double kkt = 0.0;
 };
 
 // What the solver calls back, once converged, for Algorithm 1's outer loop:

@@ -1,0 +1,153 @@
+#include "sim/solver/constraint_evaluation.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/check.h"
+#include "sim/solver/contact_rows_ops.h"
+
+namespace recoil::sim {
+
+void reset_lambda_window(ContactTrack& track, double lambda_kinetic) {
+  track.lambdas.fill(0.0);
+  track.lambdas[0] = lambda_kinetic;
+  track.samples = 1;
+  track.alpha = kAlphaTheta;
+  track.last_turn = 0;
+}
+
+namespace {
+
+double push_lambda(ContactTrack& track, double lambda) {
+  if (track.samples < kLambdaWindow) {
+    track.lambdas[static_cast<size_t>(track.samples++)] = lambda;
+  } else {
+    std::rotate(track.lambdas.begin(), track.lambdas.begin() + 1, track.lambdas.end());
+    track.lambdas.back() = lambda;
+  }
+  double sum = 0.0;
+  for (int i = 0; i < track.samples; ++i) sum += track.lambdas[static_cast<size_t>(i)];
+  return sum / track.samples;
+}
+
+struct Proposal {
+  ContactState state;
+  Eigen::Vector3d f;   // multipliers for y: (lambda, gamma) with gamma = 0 unless sticking
+  bool mode_change = false;
+  bool accept = false;
+};
+
+// Algorithm 2 for one contact whose normal row is active. u: tangential
+// velocity J_t dv - rhs_tangent, m/s.
+Proposal evaluate_active(const ContactRows& rows, const ContactState& s, ContactTrack& track, const Eigen::Vector3d& f,
+                         double slack, const Eigen::Vector2d& u, double eps2, bool frozen, bool converged) {
+  Proposal p{s, f, false, false};
+  const double lambda = f[0];
+  const Eigen::Vector2d gamma = f.tail<2>();
+  const double w_t = std::max(track.w[1], track.w[2]);
+  const bool can_stick = rows.mu_static > 0.0;
+  if (!frozen && slack >= -eps2 && lambda * track.w[0] < -eps2) {  // separating
+    p.state = ContactState{};
+    p.f.setZero();
+    p.mode_change = p.accept = true;
+    return p;
+  }
+  if (s.mode == ContactMode::sticking) {
+    const double norm = gamma.norm();
+    const double excess = (norm - rows.mu_static * std::max(lambda, 0.0)) * w_t;
+    // Break away only when the tangential residual does not push along gamma:
+    // the step would otherwise be undone by the rows' own correction.
+    if (!frozen && (!can_stick || (excess > eps2 && u.dot(gamma) <= eps2 * norm))) {
+      p.state.mode = ContactMode::sliding;
+      p.state.slip = norm > 0.0 ? Eigen::Vector2d(-gamma / norm) : Eigen::Vector2d::Zero();
+      p.state.lambda_kinetic = std::max(lambda, 0.0);
+      p.state.gamma.setZero();
+      p.f.tail<2>().setZero();
+      reset_lambda_window(track, p.state.lambda_kinetic);
+      p.mode_change = p.accept = true;
+    }
+    return p;
+  }
+  // Sliding.
+  const bool undirected = s.slip.squaredNorm() == 0.0;
+  // Reversal: the slip clearly runs backwards (more than kReversal off
+  // -slip). A slip turned sideways is a direction to follow, not a stop: with
+  // an anisotropic W_tt the slip of a contact near the cone's rim points
+  // askew to the friction impulse until the direction has converged.
+  const double speed = u.norm();
+  const bool reversed = undirected ? speed <= eps2 : (u.dot(s.slip) < -eps2 && u.dot(s.slip) < -kReversal * speed);
+  if (!frozen && can_stick && reversed) {
+    p.state.mode = ContactMode::sticking;
+    p.f.tail<2>() = -rows.mu_kinetic * s.lambda_kinetic * s.slip;
+    p.state.lambda_kinetic = 0.0;
+    p.state.slip.setZero();
+    p.mode_change = p.accept = true;
+    return p;
+  }
+  if (rows.mu_kinetic <= 0.0 || !converged) return p;  // frictionless, or u not yet trustworthy
+  // Algorithm 3: UpdateKineticFriction.
+  p.state.lambda_kinetic = push_lambda(track, std::max(lambda, 0.0));
+  if (speed > eps2) {
+    const Eigen::Vector2d u_hat = u / speed;
+    const double c = u_hat.dot(s.slip);
+    if (undirected) {
+      p.state.slip = u_hat;
+    } else if (c < std::cos(kEpsTheta)) {
+      // A turn against the previous one is an overshoot: halve the gain.
+      const int turn = s.slip.x() * u_hat.y() - s.slip.y() * u_hat.x() > 0.0 ? 1 : -1;
+      if (turn == -track.last_turn) track.alpha *= 0.5;
+      track.last_turn = turn;
+      const Eigen::Vector2d moved = s.slip + track.alpha * (u_hat - s.slip);
+      if (moved.norm() > 0.0) p.state.slip = moved.normalized();
+    }
+  }
+  const Eigen::Vector2d before = rows.mu_kinetic * s.lambda_kinetic * s.slip;
+  const Eigen::Vector2d after = rows.mu_kinetic * p.state.lambda_kinetic * p.state.slip;
+  p.accept = (after - before).norm() * w_t > eps2 || (undirected && p.state.slip.squaredNorm() > 0.0);
+  return p;
+}
+
+}  // namespace
+
+int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
+                         double eps2, int max_flips, bool converged) {
+  const int m = static_cast<int>(problem.rows.size());
+  const int n = static_cast<int>(y.size()) - 3 * m;
+  RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
+  const Eigen::VectorXd dv = y.head(n);
+  int changed = 0;
+  for (int k = 0; k < m; ++k) {
+    const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
+    ContactState& s = problem.states[static_cast<size_t>(k)];
+    ContactTrack& track = tracks[static_cast<size_t>(k)];
+    const Eigen::Vector3d f = y.segment<3>(n + 3 * k);
+    if (rows.nodes.empty()) continue;  // touches only fixed DoF: nothing to solve for
+    const bool frozen = track.flips >= max_flips;
+    const Eigen::Vector3d jdv = rows_times(rows, dv);
+    const double slack = jdv[0] - rows.rhs_normal;
+    const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
+    Proposal p{s, f, false, false};
+    if (s.mode == ContactMode::inactive) {
+      if (!frozen && slack < -eps2) {  // penetrating: activate with kinetic friction
+        p.state.mode = ContactMode::sliding;
+        p.state.lambda_kinetic = 0.0;
+        const double speed = u.norm();
+        p.state.slip = speed > eps2 ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
+        p.f.setZero();
+        reset_lambda_window(track, 0.0);
+        track.samples = 0;
+        p.mode_change = p.accept = true;
+      }
+    } else {
+      p = evaluate_active(rows, s, track, f, slack, u, eps2, frozen, converged);
+    }
+    if (!p.accept) continue;
+    s = p.state;
+    y.segment<3>(n + 3 * k) = p.f;
+    if (p.mode_change) ++track.flips;
+    ++changed;
+  }
+  return changed;
+}
+
+}  // namespace recoil::sim

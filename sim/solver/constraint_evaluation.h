@@ -1,0 +1,63 @@
+#pragma once
+// EvaluateConstraints and UpdateKineticFriction (METHOD.md section 4, seed/
+// Algorithms 2 and 3) on the CR solver's iterate y = [dv; f], f holding
+// (lambda, gamma1, gamma2) per contact. Every threshold is a velocity in m/s
+// (epsilon_2): an impulse is turned into one by the row's effective inverse
+// mass w = diag(J P_A^-1 J^T), so a change counts only when it moves some
+// contact by more than epsilon_2.
+//
+// Choices for Algorithm 3 (the paper gives no values):
+// - lambda' is the simple moving average of the last kLambdaWindow normal
+//   impulses seen at evaluations: a short window damps the lambda <-> lambda'
+//   feedback of coupled contacts and still reaches lambda exactly in
+//   kLambdaWindow evaluations once lambda has settled;
+// - the slip direction follows the tangential velocity u with gain
+//   kAlphaTheta = 0.5 whenever they differ by more than kEpsTheta: halving
+//   the angle per evaluation converges geometrically without the sign flips
+//   a full jump causes on contacts near reversal. Strongly coupled contacts
+//   still overshoot (period-2 swings of the direction between solves), so a
+//   contact's gain halves each time its turn reverses sign. kEpsTheta is tiny (1e-9
+//   rad) because the real threshold is epsilon_2: a turn is kept only when
+//   the impulse change it causes exceeds epsilon_2, so the direction is as
+//   accurate as the rest of the solve;
+// - kinetic -> static needs the slip to run backwards by more than
+//   acos(-kReversal) = 120 degrees off the slip direction; smaller turns are
+//   followed as direction changes.
+#include <Eigen/Core>
+#include <array>
+#include <vector>
+
+#include "sim/solver/contact_problem.h"
+
+namespace recoil::sim {
+
+inline constexpr int kLambdaWindow = 3;
+inline constexpr double kAlphaTheta = 0.5;
+inline constexpr double kEpsTheta = 1e-9;  // rad
+inline constexpr double kReversal = 0.5;
+
+// Solver-side bookkeeping of one contact, beside its ContactState.
+struct ContactTrack {
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();  // effective inverse mass of the three rows, 1/kg
+  std::array<double, kLambdaWindow> lambdas{};  // recent normal impulses of a sliding contact, N s
+  int samples = 0;                              // filled entries of `lambdas`
+  int flips = 0;                                // mode changes in this solve
+  double alpha = kAlphaTheta;                   // direction gain, halved at each overshoot
+  int last_turn = 0;                            // sign of the last direction turn (+1 counter-clockwise)
+};
+
+// Starts the moving average of a sliding contact at `lambda_kinetic`.
+void reset_lambda_window(ContactTrack& track, double lambda_kinetic);
+
+// Evaluates every contact of `problem` at y (#DoF + 3 #contacts); applies
+// the accepted changes to problem.states and to the multipliers in y.
+// Contacts past `max_flips` mode changes keep their mode. Algorithm 3 runs
+// only when `converged` (y solves the current system): lambda' and the slip
+// direction are a fixed-point iteration over whole solves, and feeding it
+// the half-converged u of mid-solve evaluations made it chase its own tail
+// (restart cycles on random coupled problems). Returns the number of
+// contacts changed.
+int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
+                         double eps2, int max_flips, bool converged);
+
+}  // namespace recoil::sim

@@ -1,0 +1,49 @@
+#include "sim/solver/contact_rows_ops.h"
+
+#include <Eigen/LU>
+
+#include "core/check.h"
+
+namespace recoil::sim {
+
+Eigen::Vector3d rows_times(const ContactRows& rows, const Eigen::VectorXd& dv) {
+  Eigen::Vector3d out = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < rows.nodes.size(); ++i) out.noalias() += rows.blocks[i] * dv.segment<3>(3 * rows.nodes[i]);
+  return out;
+}
+
+void add_rows_transpose_times(const ContactRows& rows, const Eigen::Vector3d& f, Eigen::VectorXd& out) {
+  for (size_t i = 0; i < rows.nodes.size(); ++i)
+    out.segment<3>(3 * rows.nodes[i]).noalias() += rows.blocks[i].transpose() * f;
+}
+
+std::vector<Eigen::Matrix3d> inverse_diagonal_blocks(const BlockSparseMatrix& A) {
+  std::vector<Eigen::Matrix3d> out(static_cast<size_t>(A.block_rows()));
+  for (int r = 0; r < A.block_rows(); ++r) {
+    const Eigen::Matrix3d& block = A.diagonal_block(r);
+    RECOIL_CHECK(block.determinant() > 0.0, "diagonal block " << r << " of A is not SPD");
+    out[static_cast<size_t>(r)] = block.inverse();
+  }
+  return out;
+}
+
+Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag) {
+  Eigen::Vector3d w = Eigen::Vector3d::Zero();
+  for (size_t i = 0; i < rows.nodes.size(); ++i) {
+    const Eigen::Matrix3d& J = rows.blocks[i];
+    const Eigen::Matrix3d& P = inv_diag[static_cast<size_t>(rows.nodes[i])];
+    for (int r = 0; r < 3; ++r) w[r] += J.row(r).dot(P * J.row(r).transpose());
+  }
+  return w;
+}
+
+Eigen::Vector2d tangent_impulse(const ContactRows& rows, const ContactState& state) {
+  switch (state.mode) {
+    case ContactMode::sticking: return state.gamma;
+    case ContactMode::sliding: return -rows.mu_kinetic * state.lambda_kinetic * state.slip;
+    case ContactMode::inactive: break;
+  }
+  return Eigen::Vector2d::Zero();
+}
+
+}  // namespace recoil::sim

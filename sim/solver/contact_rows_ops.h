@@ -1,0 +1,30 @@
+#pragma once
+// Small kernels on the per-contact rows of contact_problem.h, shared by the
+// CR solver, the PGS baseline and the KKT residual: J_k dv, J_k^T f, the
+// block-Jacobi inverse of A and the per-row effective inverse mass
+// diag(J P_A^-1 J^T) that turns an impulse (N s) into a velocity (m/s).
+#include <Eigen/Core>
+#include <vector>
+
+#include "sim/solver/contact_problem.h"
+
+namespace recoil::sim {
+
+// J_k dv: (normal, t1, t2) velocities in m/s. dv is #DoF.
+Eigen::Vector3d rows_times(const ContactRows& rows, const Eigen::VectorXd& dv);
+
+// out += J_k^T f (f = (normal, t1, t2) impulses, N s). out is #DoF.
+void add_rows_transpose_times(const ContactRows& rows, const Eigen::Vector3d& f, Eigen::VectorXd& out);
+
+// The inverted 3x3 diagonal blocks of A, one per node (P_A^-1 of METHOD.md section 5).
+std::vector<Eigen::Matrix3d> inverse_diagonal_blocks(const BlockSparseMatrix& A);
+
+// diag(J_k P_A^-1 J_k^T) for the three rows of one contact, 1/kg. A row that
+// touches no free DoF gets 0.
+Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag);
+
+// The friction impulse (t1, t2) that `state` applies: gamma when sticking,
+// -mu_kinetic lambda' slip when sliding, 0 when inactive.
+Eigen::Vector2d tangent_impulse(const ContactRows& rows, const ContactState& state);
+
+}  // namespace recoil::sim

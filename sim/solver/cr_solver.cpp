@@ -1,0 +1,344 @@
+#include "sim/solver/cr_solver.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/check.h"
+#include "sim/solver/constraint_evaluation.h"
+#include "sim/solver/contact_rows_ops.h"
+
+namespace recoil::sim {
+
+namespace {
+
+// Below this |z^T B z| / (|z| |B z|) the CR recurrence has broken down.
+constexpr double kBreakdown = 1e-12;
+
+class CrSolver {
+ public:
+  CrSolver(ContactProblem& problem, const ContactSolverSettings& settings, bool preconditioned,
+           ContactLinearization* linearization, ContactSolverStats& stats)
+      : m_problem(problem), m_settings(settings), m_preconditioned(preconditioned),
+        m_linearization(linearization), m_stats(stats), m_n(problem.A->rows()),
+        m_inv_diag(inverse_diagonal_blocks(*problem.A)) {}
+
+  void run(Eigen::VectorXd& dv);
+
+ private:
+  int contacts() const { return static_cast<int>(m_problem.rows.size()); }
+  bool normal_on(int k) const { return m_problem.states[static_cast<size_t>(k)].mode != ContactMode::inactive; }
+  bool tangent_on(int k) const { return m_problem.states[static_cast<size_t>(k)].mode == ContactMode::sticking; }
+  bool row_on(int k, int r) const { return r == 0 ? normal_on(k) : tangent_on(k); }
+  double row_w(int k, int r) const { return m_tracks[static_cast<size_t>(k)].w[r]; }
+
+  void start_from_warm_states();
+  void grow_contacts();
+  void refresh_rows();
+  void build_rhs();
+  void apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
+  void apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
+  double scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const;
+  void restart_true();
+  void restart_recurrence();
+  void rescue_step();
+  bool finish_or_continue();
+  bool step();
+  bool out_of_budget() const { return m_stats.iterations + m_stats.restarts >= m_settings.max_iterations; }
+
+  ContactProblem& m_problem;
+  const ContactSolverSettings& m_settings;
+  bool m_preconditioned;
+  ContactLinearization* m_linearization;
+  ContactSolverStats& m_stats;
+  int m_n;
+  std::vector<Eigen::Matrix3d> m_inv_diag;  // P_A^-1, one per node
+  std::vector<ContactTrack> m_tracks;
+  Eigen::VectorXd m_y, m_d, m_r, m_z, m_p, m_q, m_t, m_bz;
+  double m_rho = 0.0;
+  int m_since_restart = 0;
+  bool m_residual_true = false;
+};
+
+void CrSolver::start_from_warm_states() {
+  const int m = contacts();
+  m_tracks.assign(static_cast<size_t>(m), ContactTrack{});
+  m_y = Eigen::VectorXd::Zero(m_n + 3 * m);  // dv starts at zero (METHOD.md section 3, step 3)
+  for (int k = 0; k < m; ++k) {
+    ContactState& s = m_problem.states[static_cast<size_t>(k)];
+    const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
+    if (rows.nodes.empty()) s = ContactState{};
+    if (s.mode == ContactMode::sticking && rows.mu_static <= 0.0) {
+      s.mode = ContactMode::sliding;
+      s.gamma.setZero();
+    }
+    if (s.mode == ContactMode::sliding) {
+      s.lambda_kinetic = std::max(s.lambda_kinetic, 0.0);
+      s.slip = s.slip.norm() > 0.0 ? Eigen::Vector2d(s.slip.normalized()) : Eigen::Vector2d::Zero();
+      reset_lambda_window(m_tracks[static_cast<size_t>(k)], s.lambda_kinetic);
+    }
+    if (s.mode != ContactMode::inactive) m_y[m_n + 3 * k] = s.lambda;
+    if (s.mode == ContactMode::sticking) m_y.segment<2>(m_n + 3 * k + 1) = s.gamma;
+  }
+}
+
+void CrSolver::grow_contacts() {
+  const int m = contacts();
+  RECOIL_CHECK(m_problem.states.size() == m_problem.rows.size());
+  const int old = static_cast<int>(m_tracks.size());
+  RECOIL_CHECK(m >= old);
+  m_tracks.resize(static_cast<size_t>(m));
+  m_y.conservativeResize(m_n + 3 * m);
+  m_y.tail(3 * (m - old)).setZero();
+  for (int k = old; k < m; ++k) m_problem.states[static_cast<size_t>(k)] = ContactState{};
+}
+
+void CrSolver::refresh_rows() {
+  for (int k = 0; k < contacts(); ++k)
+    m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(m_problem.rows[static_cast<size_t>(k)], m_inv_diag);
+}
+
+void CrSolver::build_rhs() {
+  const int m = contacts();
+  m_d.setZero(m_n + 3 * m);
+  m_d.head(m_n) = m_problem.b;
+  for (int k = 0; k < m; ++k) {
+    const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
+    const ContactState& s = m_problem.states[static_cast<size_t>(k)];
+    if (s.mode == ContactMode::sliding) {
+      Eigen::Vector3d f;
+      f << 0.0, tangent_impulse(rows, s);
+      add_rows_transpose_times(rows, f, m_d);
+    }
+    if (normal_on(k)) m_d[m_n + 3 * k] = -rows.rhs_normal;
+    if (tangent_on(k)) m_d.segment<2>(m_n + 3 * k + 1) = -rows.rhs_tangent;
+  }
+}
+
+void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+  const int m = contacts();
+  out.resize(m_n + 3 * m);
+  Eigen::VectorXd top;
+  m_problem.A->multiply(x.head(m_n), top);
+  const Eigen::VectorXd dv = x.head(m_n);
+  for (int k = 0; k < m; ++k) {
+    const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
+    Eigen::Vector3d mask(normal_on(k) ? 1.0 : 0.0, tangent_on(k) ? 1.0 : 0.0, tangent_on(k) ? 1.0 : 0.0);
+    const Eigen::Vector3d f = x.segment<3>(m_n + 3 * k);
+    add_rows_transpose_times(rows, -mask.cwiseProduct(f), top);
+    const Eigen::Vector3d jdv = rows_times(rows, dv);
+    out.segment<3>(m_n + 3 * k) = -mask.cwiseProduct(jdv) - (Eigen::Vector3d::Ones() - mask).cwiseProduct(f);
+  }
+  out.head(m_n) = top;
+}
+
+// C = diag(P_A, P_S) of METHOD.md section 5: P_S = diag(J P_A^-1 J^T) on
+// selected rows, 1 on the others (whose B entry is -1).
+void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+  out.resize(x.size());
+  if (!m_preconditioned) {
+    out = x;
+    return;
+  }
+  for (int i = 0; i < m_n / 3; ++i) out.segment<3>(3 * i) = m_inv_diag[static_cast<size_t>(i)] * x.segment<3>(3 * i);
+  for (int k = 0; k < contacts(); ++k)
+    for (int r = 0; r < 3; ++r) {
+      const int i = m_n + 3 * k + r;
+      const double w = row_w(k, r);
+      out[i] = row_on(k, r) && w > 0.0 ? x[i] / w : x[i];
+    }
+}
+
+// The residual as velocities (m/s): momentum rows through P_A^-1, selected
+// rows as they are, unselected rows (a multiplier that should be zero)
+// through the row's effective inverse mass. Independent of the
+// preconditioner, so cr and cr_plain stop at the same accuracy.
+double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const {
+  double sum = 0.0;
+  for (int i = 0; i < m_n / 3; ++i) sum += (m_inv_diag[static_cast<size_t>(i)] * r.segment<3>(3 * i)).squaredNorm();
+  constraint_inf = 0.0;
+  for (int k = 0; k < contacts(); ++k)
+    for (int r_i = 0; r_i < 3; ++r_i) {
+      const double w = row_w(k, r_i);
+      const double v = r[m_n + 3 * k + r_i] * (row_on(k, r_i) || w <= 0.0 ? 1.0 : w);
+      sum += v * v;
+      constraint_inf = std::max(constraint_inf, std::abs(v));
+    }
+  return std::sqrt(sum);
+}
+
+// Restart from the explicitly recomputed residual r = d - B y.
+void CrSolver::restart_true() {
+  apply_B(m_y, m_r);
+  m_r = m_d - m_r;
+  m_residual_true = true;
+  restart_recurrence();
+}
+
+void CrSolver::restart_recurrence() {
+  apply_Cinv(m_r, m_z);
+  m_p = m_z;
+  apply_B(m_z, m_bz);
+  m_q = m_bz;
+  m_rho = m_z.dot(m_bz);
+  m_since_restart = 0;
+  double constraint_inf = 0.0;
+  if (std::abs(m_rho) <= kBreakdown * m_z.norm() * m_bz.norm() && scaled_norm(m_r, constraint_inf) >= m_settings.tolerance)
+    rescue_step();
+}
+
+// z^T B z ~ 0 right after a restart: no progress along z is possible, so
+// take one minimal-residual step along C^-1 B z, whose residual decrease
+// z^T B C^-1 B z is positive, and restart the recurrence from there.
+void CrSolver::rescue_step() {
+  Eigen::VectorXd dir, bdir, cbdir;
+  apply_Cinv(m_bz, dir);
+  apply_B(dir, bdir);
+  apply_Cinv(bdir, cbdir);
+  const double den = bdir.dot(cbdir);
+  if (!(den > 0.0)) return;
+  const double alpha = m_z.dot(bdir) / den;
+  m_y += alpha * dir;
+  m_r -= alpha * bdir;
+  m_residual_true = false;
+  ++m_stats.iterations;
+  apply_Cinv(m_r, m_z);
+  m_p = m_z;
+  apply_B(m_z, m_bz);
+  m_q = m_bz;
+  m_rho = m_z.dot(m_bz);
+}
+
+// One CR iteration (Algorithm 1 lines 9-21). Returns false when it had to
+// restart instead.
+bool CrSolver::step() {
+  apply_Cinv(m_q, m_t);
+  const double den = m_q.dot(m_t);
+  if (!(den > 0.0)) {
+    ++m_stats.restarts;
+    restart_true();
+    return false;
+  }
+  const double alpha = m_rho / den;
+  m_y += alpha * m_p;
+  m_r -= alpha * m_q;
+  m_z -= alpha * m_t;
+  m_residual_true = false;
+  ++m_stats.iterations;
+  ++m_since_restart;
+  if (alpha > 0.0) {
+    double constraint_inf = 0.0;
+    const double res = scaled_norm(m_r, constraint_inf);
+    const double decades = res > m_settings.tolerance ? std::log10(res / m_settings.tolerance) : 0.0;
+    const int interval = std::max(1, static_cast<int>(std::floor(decades * decades / 2.0)));
+    if (m_since_restart % interval == 0 &&
+        evaluate_constraints(m_problem, m_tracks, m_y, m_settings.constraint_tolerance, m_settings.max_flips, false) > 0) {
+      ++m_stats.restarts;
+      build_rhs();
+      restart_true();
+      return false;
+    }
+  }
+  apply_B(m_z, m_bz);
+  const double rho = m_z.dot(m_bz);
+  if (std::abs(rho) <= kBreakdown * m_z.norm() * m_bz.norm()) {
+    ++m_stats.restarts;
+    restart_true();
+    return false;
+  }
+  const double beta = rho / m_rho;
+  m_rho = rho;
+  m_p = m_z + beta * m_p;
+  m_q = m_bz + beta * m_q;
+  return true;
+}
+
+// Algorithm 1 lines 22-31 once the residual is below epsilon_1: re-check on
+// the true residual, evaluate every constraint, look for new contacts,
+// re-linearise. Returns true when the solve is done.
+bool CrSolver::finish_or_continue() {
+  if (!m_residual_true) {
+    ++m_stats.restarts;
+    restart_true();
+    return false;
+  }
+  const double eps2 = m_settings.constraint_tolerance;
+  if (evaluate_constraints(m_problem, m_tracks, m_y, eps2, m_settings.max_flips, true) > 0) {
+    ++m_stats.restarts;
+    build_rhs();
+    restart_true();
+    return false;
+  }
+  if (m_linearization == nullptr) return true;
+  const Eigen::VectorXd dv = m_y.head(m_n);
+  const int added = m_linearization->add_new_contacts(dv, m_problem);
+  if (added > 0) {
+    m_stats.new_contacts += added;
+    grow_contacts();
+    refresh_rows();
+    ++m_stats.restarts;
+    build_rhs();
+    restart_true();
+    return false;
+  }
+  if (m_stats.relinearizations >= m_settings.max_relinearizations) return true;
+  const double change = m_linearization->relinearize(dv, m_problem);
+  ++m_stats.relinearizations;
+  RECOIL_CHECK(m_problem.rows.size() == m_tracks.size(), "relinearize must not add contacts");
+  refresh_rows();
+  build_rhs();
+  restart_true();
+  if (change <= eps2) return true;
+  ++m_stats.restarts;
+  return false;
+}
+
+void CrSolver::run(Eigen::VectorXd& dv) {
+  start_from_warm_states();
+  refresh_rows();
+  build_rhs();
+  restart_true();
+  m_stats.converged = false;
+  while (!out_of_budget()) {
+    double constraint_inf = 0.0;
+    const double res = scaled_norm(m_r, constraint_inf);
+    if (res < m_settings.tolerance && (!m_residual_true || constraint_inf < m_settings.constraint_tolerance)) {
+      if (finish_or_continue()) {
+        m_stats.converged = true;
+        break;
+      }
+      continue;
+    }
+    step();
+  }
+  // Hand back what the iterate says, converged or not.
+  dv = m_y.head(m_n);
+  double constraint_inf = 0.0;
+  if (!m_residual_true) restart_true();
+  m_stats.residual = scaled_norm(m_r, constraint_inf);
+  for (int k = 0; k < contacts(); ++k) {
+    ContactState& s = m_problem.states[static_cast<size_t>(k)];
+    if (s.mode == ContactMode::inactive) {
+      s = ContactState{};
+      continue;
+    }
+    s.lambda = m_y[m_n + 3 * k];
+    if (s.mode == ContactMode::sticking) {
+      s.gamma = m_y.segment<2>(m_n + 3 * k + 1);
+      ++m_stats.sticking;
+    } else {
+      s.gamma.setZero();
+      ++m_stats.sliding;
+    }
+    ++m_stats.active;
+  }
+}
+
+}  // namespace
+
+void solve_contacts_cr(ContactProblem& problem, const ContactSolverSettings& settings, bool preconditioned,
+                       Eigen::VectorXd& dv, ContactLinearization* linearization, ContactSolverStats& stats) {
+  CrSolver solver(problem, settings, preconditioned, linearization, stats);
+  solver.run(dv);
+}
+
+}  // namespace recoil::sim

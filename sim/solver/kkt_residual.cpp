@@ -1,0 +1,68 @@
+#include "sim/solver/kkt_residual.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/check.h"
+#include "sim/solver/contact_rows_ops.h"
+
+namespace recoil::sim {
+
+double KktResidual::max() const { return std::max({momentum, penetration, complementarity, friction}); }
+
+namespace {
+
+// Coulomb's law for a sliding contact, as a velocity: the impulse must be
+// mu_k lambda opposite the slip u. A wrong direction at a vanishing slip is
+// a sticking contact in disguise, hence the min with |u|.
+double sliding_violation(const ContactRows& rows, const ContactState& s, const Eigen::Vector2d& u, double w_t) {
+  double err = rows.mu_kinetic * std::abs(s.lambda_kinetic - s.lambda) * w_t;
+  const double speed = u.norm();
+  if (rows.mu_kinetic > 0.0 && s.lambda > 0.0) {
+    const Eigen::Vector2d want = speed > 0.0 ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
+    const double direction = rows.mu_kinetic * s.lambda * w_t * (s.slip - want).norm();
+    err = std::max(err, std::min(direction, speed));
+  }
+  return err;
+}
+
+}  // namespace
+
+KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv) {
+  RECOIL_CHECK(problem.A != nullptr && problem.rows.size() == problem.states.size());
+  const BlockSparseMatrix& A = *problem.A;
+  RECOIL_CHECK(dv.size() == A.rows() && problem.b.size() == A.rows());
+  const std::vector<Eigen::Matrix3d> inv_diag = inverse_diagonal_blocks(A);
+
+  KktResidual out;
+  Eigen::VectorXd g;
+  A.multiply(dv, g);
+  g -= problem.b;
+  for (size_t k = 0; k < problem.rows.size(); ++k) {
+    const ContactRows& rows = problem.rows[k];
+    const ContactState& s = problem.states[k];
+    const Eigen::Vector3d w = effective_inverse_mass(rows, inv_diag);
+    const double w_t = std::max(w[1], w[2]);
+    const Eigen::Vector3d jdv = rows_times(rows, dv);
+    const double slack = jdv[0] - rows.rhs_normal;
+    const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
+    if (!rows.nodes.empty()) out.penetration = std::max(out.penetration, -slack);
+    if (s.mode == ContactMode::inactive) continue;
+    Eigen::Vector3d f;
+    f << s.lambda, tangent_impulse(rows, s);
+    add_rows_transpose_times(rows, -f, g);
+    out.complementarity = std::max(out.complementarity, -s.lambda * w[0]);
+    if (slack > 0.0 && s.lambda > 0.0) out.complementarity = std::max(out.complementarity, std::min(slack, s.lambda * w[0]));
+    if (s.mode == ContactMode::sticking) {
+      out.friction = std::max(out.friction, u.lpNorm<Eigen::Infinity>());
+      out.friction = std::max(out.friction, (s.gamma.norm() - rows.mu_static * s.lambda) * w_t);
+    } else {
+      out.friction = std::max(out.friction, sliding_violation(rows, s, u, w_t));
+    }
+  }
+  for (int r = 0; r < A.block_rows(); ++r)
+    out.momentum = std::max(out.momentum, (inv_diag[static_cast<size_t>(r)] * g.segment<3>(3 * r)).lpNorm<Eigen::Infinity>());
+  return out;
+}
+
+}  // namespace recoil::sim
