@@ -2,12 +2,12 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
 #include "core/check.h"
 #include "core/error.h"
+#include "sim/collision/collision_detector.h"
 #include "sim/collision/embree_scene.h"
 #include "sim/fem/assembly.h"
 
@@ -15,15 +15,22 @@ namespace recoil::sim {
 
 namespace {
 
-using Clock = std::chrono::steady_clock;
-double ms_since(Clock::time_point start) {
-  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
-
 // A body's energy may grow at most this many times its reference scale above
 // its initial value before the step is reported as a blow-up. Implicit Euler
 // only dissipates, so any real growth is numerical trouble.
 constexpr double kBlowupFactor = 10.0;
+
+void check_friction(double static_coefficient, double kinetic_coefficient, const std::string& where) {
+  if (!std::isfinite(static_coefficient) || !std::isfinite(kinetic_coefficient) || static_coefficient < 0.0 ||
+      kinetic_coefficient < 0.0)
+    throw bad_input(where + ": friction coefficients must be finite and >= 0");
+}
+
+Aabb bounds(const Points& p) {
+  Aabb box;
+  for (Eigen::Index i = 0; i < p.rows(); ++i) box.extend(p.row(i).transpose());
+  return box;
+}
 
 }  // namespace
 
@@ -38,17 +45,46 @@ const char* to_string(StepStatus status) {
 }
 
 World::World(const WorldDesc& desc)
-    : m_device(std::make_unique<EmbreeDevice>()), m_dt(desc.dt), m_gravity(desc.gravity), m_solver(desc.solver) {
+    : m_device(std::make_unique<EmbreeDevice>()), m_dt(desc.dt), m_gravity(desc.gravity), m_solver(desc.solver),
+      m_contact(desc.contact) {
   if (!(desc.dt > 0.0) || !std::isfinite(desc.dt)) throw bad_input("simulation/dt: must be > 0");
   if (!desc.gravity.allFinite()) throw bad_input("simulation/gravity: must be finite");
   if (!(desc.solver.relative_tolerance > 0.0) || desc.solver.max_iterations < 1)
     throw bad_input("simulation/solver: tolerance must be > 0 and max_iterations >= 1");
+  if (!(desc.contact.margin > 0.0) || !std::isfinite(desc.contact.margin))
+    throw bad_input("contact/margin: must be > 0");
+  if (desc.contact.num_threads < 1) throw bad_input("contact/num_threads: must be >= 1");
+  if (!(desc.contact.solver.tolerance > 0.0) || desc.contact.solver.max_iterations < 1)
+    throw bad_input("contact/solver: tolerance must be > 0 and max_iterations >= 1");
   int nodes = 0;
   for (size_t i = 0; i < desc.bodies.size(); ++i) {
-    m_bodies.push_back(build_deformable_body(desc.bodies[i], *m_device, "bodies/" + std::to_string(i)));
+    const std::string where = "bodies/" + std::to_string(i);
+    check_friction(desc.bodies[i].static_friction, desc.bodies[i].kinetic_friction, where + "/friction");
+    m_bodies.push_back(build_deformable_body(desc.bodies[i], *m_device, where));
     m_bodies.back().node_offset = nodes;
     nodes += m_bodies.back().num_nodes;
+    m_mu_static.push_back(desc.bodies[i].static_friction);
+    m_mu_kinetic.push_back(desc.bodies[i].kinetic_friction);
+    m_self_contact.push_back(desc.bodies[i].self_contact);
   }
+  for (size_t i = 0; i < desc.rigid_bodies.size(); ++i) {
+    m_rigid.push_back(build_rigid_body(desc.rigid_bodies[i], "rigid_bodies/" + std::to_string(i)));
+    if (m_rigid.back().motion == RigidMotion::dynamic) {
+      m_rigid.back().linear_node = nodes;
+      nodes += 2;
+      m_dynamic.push_back(static_cast<int>(i));
+    }
+  }
+  for (size_t i = 0; i < desc.planes.size(); ++i) {
+    PlaneDesc p = desc.planes[i];
+    const std::string where = "planes/" + std::to_string(i);
+    if (!p.point.allFinite() || !p.normal.allFinite() || !(p.normal.norm() > 0.0))
+      throw bad_input(where + ": point must be finite and normal non-zero");
+    check_friction(p.friction.static_coefficient, p.friction.kinetic_coefficient, where + "/friction");
+    p.normal.normalize();
+    m_planes.push_back(std::move(p));
+  }
+
   m_x.resize(3 * nodes);
   m_v.resize(3 * nodes);
   m_fixed.assign(static_cast<size_t>(nodes), 0);
@@ -65,78 +101,62 @@ World::World(const WorldDesc& desc)
     const auto p = block_pairs(body);
     pairs.insert(pairs.end(), p.begin(), p.end());
   }
-  m_A = BlockSparseMatrix(nodes, std::move(pairs));
+  for (int r : m_dynamic) {
+    const RigidBody& body = m_rigid[static_cast<size_t>(r)];
+    m_v.segment<3>(3 * body.linear_node) = body.velocity;
+    m_v.segment<3>(3 * body.linear_node + 3) = body.angular_velocity;
+  }
+  sync_rigid_positions();
+  m_A = BlockSparseMatrix(nodes, std::move(pairs));  // rigid nodes: diagonal blocks only
   for (auto& body : m_bodies) index_blocks(body, m_A);
+  m_detector = std::make_unique<CollisionDetector>(CollisionSettings{m_contact.margin, m_contact.num_threads});
 
   m_elastic.assign(m_bodies.size(), 0.0);
   reset_energy_reference();
 }
 
-void World::reset_energy_reference() {
-  m_energy0.assign(m_bodies.size(), 0.0);
-  m_energy_scale.assign(m_bodies.size(), 0.0);
-  for (size_t i = 0; i < m_bodies.size(); ++i) {
-    const ElasticState s = elastic_state(m_bodies[i], m_x, /*with_energy=*/true);
-    m_elastic[i] = s.energy;
-    m_energy0[i] = total_energy(static_cast<int>(i), s.energy);
-    const Aabb box = bounding_box(m_bodies[i].surface);
-    const double size = box.valid() ? box.extent().norm() : 1.0;
-    // Energy scale: initial kinetic + elastic, plus what gravity can release
-    // over a fall of 10 body sizes, plus a floor for bodies at rest in zero g.
-    m_energy_scale[i] = std::abs(m_energy0[i]) + m_bodies[i].mass.sum() * m_gravity.norm() * 10.0 * size +
-                        m_bodies[i].mass.sum() * 1e-6;
+World::~World() = default;
+
+void World::sync_rigid_positions() {
+  for (int r : m_dynamic) {
+    const RigidBody& body = m_rigid[static_cast<size_t>(r)];
+    m_x.segment<3>(3 * body.linear_node) = body.pose.center;
+    m_x.segment<3>(3 * body.linear_node + 3) = rotation_vector(body.pose.orientation);
   }
 }
 
-World::~World() = default;
-
-StepReport World::step() {
-  StepReport report;
-  const auto start = Clock::now();
-  auto t = Clock::now();
-  assemble();
-  report.profile.assemble = ms_since(t);
-
-  t = Clock::now();
-  const PcgResult pcg = solve();
-  report.profile.solve = ms_since(t);
-  report.solver_iterations = pcg.iterations;
-  report.solver_residual = pcg.relative_residual;
-  report.solver_converged = pcg.converged;
-
-  t = Clock::now();
-  integrate();
-  report.profile.integrate = ms_since(t);
-
-  t = Clock::now();
-  check_health(report);
-  report.profile.health = ms_since(t);
-  report.profile.total = ms_since(start);
-
-  m_time += m_dt;
-  ++m_counters.steps;
-  if (!pcg.converged) ++m_counters.solver_not_converged;
-  report.step = m_counters.steps;
-  report.time = m_time;
-  return report;
-}
-
-void World::assemble() {
-  m_A.set_zero();
-  m_b = Eigen::VectorXd::Zero(m_x.size());
-  for (size_t i = 0; i < m_bodies.size(); ++i)
-    m_elastic[i] = assemble_body(m_bodies[i], m_x, m_v, m_dt, m_gravity, m_A, m_b);
-  m_A.fix(m_fixed);
-}
-
-PcgResult World::solve() { return solve_pcg(m_A, m_b, m_dv, m_solver); }
-
-void World::integrate() {
-  m_v += m_dv;
-  m_x += m_dt * m_v;
+void World::reset_energy_reference() {
+  const size_t count = m_bodies.size() + m_dynamic.size();
+  m_energy0.assign(count, 0.0);
+  m_energy_scale.assign(count, 0.0);
+  for (size_t i = 0; i < count; ++i) {
+    double elastic = 0.0, mass = 0.0;
+    Aabb box;
+    if (i < m_bodies.size()) {
+      elastic = elastic_state(m_bodies[i], m_x, /*with_energy=*/true).energy;
+      m_elastic[i] = elastic;
+      box = bounding_box(m_bodies[i].surface);
+      mass = m_bodies[i].mass.sum();
+    } else {
+      const RigidBody& body = m_rigid[static_cast<size_t>(m_dynamic[i - m_bodies.size()])];
+      box = bounds(body.local);
+      mass = body.mass;
+    }
+    m_energy0[i] = total_energy(static_cast<int>(i), elastic);
+    const double size = box.valid() ? box.extent().norm() : 1.0;
+    // Energy scale: initial kinetic + elastic, plus what gravity can release
+    // over a fall of 10 body sizes, plus a floor for bodies at rest in zero g.
+    m_energy_scale[i] = std::abs(m_energy0[i]) + mass * m_gravity.norm() * 10.0 * size + mass * 1e-6;
+  }
 }
 
 double World::total_energy(int i, double elastic) const {
+  if (static_cast<size_t>(i) >= m_bodies.size()) {
+    const RigidBody& body = m_rigid[static_cast<size_t>(m_dynamic[static_cast<size_t>(i) - m_bodies.size()])];
+    const Eigen::Vector3d v = m_v.segment<3>(3 * body.linear_node), w = m_v.segment<3>(3 * body.linear_node + 3);
+    return 0.5 * body.mass * v.squaredNorm() + 0.5 * w.dot(body.world_inertia() * w) -
+           body.mass * m_gravity.dot(body.pose.center);
+  }
   const DeformableBody& body = m_bodies[static_cast<size_t>(i)];
   double e = elastic;
   for (int n = 0; n < body.num_nodes; ++n) {
@@ -163,21 +183,28 @@ void World::check_health(StepReport& report) {
       report.body = body;
     }
   };
-  for (size_t i = 0; i < m_bodies.size(); ++i) {
-    const DeformableBody& body = m_bodies[i];
-    const auto xs = m_x.segment(3 * body.node_offset, 3 * body.num_nodes);
-    const auto vs = m_v.segment(3 * body.node_offset, 3 * body.num_nodes);
-    if (!xs.allFinite() || !vs.allFinite()) {
-      raise(StepStatus::nan, body.name);
+  for (size_t i = 0; i < m_bodies.size() + m_dynamic.size(); ++i) {
+    const bool deformable = i < m_bodies.size();
+    const int offset = deformable ? m_bodies[i].node_offset
+                                  : m_rigid[static_cast<size_t>(m_dynamic[i - m_bodies.size()])].linear_node;
+    const int count = deformable ? m_bodies[i].num_nodes : 2;
+    const std::string& name =
+        deformable ? m_bodies[i].name : m_rigid[static_cast<size_t>(m_dynamic[i - m_bodies.size()])].name;
+    if (!m_x.segment(3 * offset, 3 * count).allFinite() || !m_v.segment(3 * offset, 3 * count).allFinite()) {
+      raise(StepStatus::nan, name);
       continue;
     }
-    const ElasticState s = elastic_state(body, m_x, /*with_energy=*/false);
-    report.inverted_tets += s.inverted;
-    if (s.inverted > 0) raise(StepStatus::inverted, body.name);
-    // The elastic part lags one step (it comes from assembly): a blow-up shows
-    // in the kinetic energy first anyway.
-    if (total_energy(static_cast<int>(i), m_elastic[i]) - m_energy0[i] > kBlowupFactor * m_energy_scale[i])
-      raise(StepStatus::energy_blowup, body.name);
+    double elastic = 0.0;
+    if (deformable) {
+      const ElasticState s = elastic_state(m_bodies[i], m_x, /*with_energy=*/false);
+      report.inverted_tets += s.inverted;
+      if (s.inverted > 0) raise(StepStatus::inverted, name);
+      // The elastic part lags one step (it comes from assembly): a blow-up
+      // shows in the kinetic energy first anyway.
+      elastic = m_elastic[i];
+    }
+    if (total_energy(static_cast<int>(i), elastic) - m_energy0[i] > kBlowupFactor * m_energy_scale[i])
+      raise(StepStatus::energy_blowup, name);
   }
   if (report.status == StepStatus::nan) ++m_counters.nan_steps;
   if (report.status == StepStatus::energy_blowup) ++m_counters.energy_blowup_steps;
@@ -189,6 +216,14 @@ void World::set_state(const Eigen::VectorXd& positions, const Eigen::VectorXd& v
   RECOIL_CHECK(positions.size() == m_x.size() && velocities.size() == m_v.size());
   m_x = positions;
   m_v = velocities;
+  for (int r : m_dynamic) {
+    RigidBody& body = m_rigid[static_cast<size_t>(r)];
+    body.pose.center = m_x.segment<3>(3 * body.linear_node);
+    body.pose.orientation = from_rotation_vector(m_x.segment<3>(3 * body.linear_node + 3));
+    body.velocity = m_v.segment<3>(3 * body.linear_node);
+    body.angular_velocity = m_v.segment<3>(3 * body.linear_node + 3);
+  }
+  m_memory.clear();
   if (reset_energy_ref && positions.allFinite() && velocities.allFinite()) reset_energy_reference();
 }
 
@@ -201,6 +236,16 @@ std::vector<BodySurface> World::surfaces() const {
     for (int n = 0; n < body.num_nodes; ++n) nodes.row(n) = m_x.segment<3>(3 * (body.node_offset + n)).transpose();
     embedded_positions(body.embedding, body.rest.tets, nodes, s.positions);
     s.triangles = body.surface.triangles;
+    out.push_back(std::move(s));
+  }
+  for (const RigidBody& body : m_rigid) {
+    BodySurface s;
+    s.name = body.name;
+    s.kind = body.motion == RigidMotion::dynamic     ? BodyKind::rigid
+             : body.motion == RigidMotion::kinematic ? BodyKind::kinematic
+                                                     : BodyKind::fixed;
+    world_points(body.local, body.pose, s.positions);
+    s.triangles = body.triangles;
     out.push_back(std::move(s));
   }
   return out;
@@ -226,6 +271,18 @@ std::vector<BodyStats> World::stats() const {
     const ElasticState e = elastic_state(body, m_x, /*with_energy=*/true);
     s.elastic_energy = e.energy;
     s.min_volume_ratio = e.min_volume_ratio;
+    out.push_back(std::move(s));
+  }
+  for (int r : m_dynamic) {
+    const RigidBody& body = m_rigid[static_cast<size_t>(r)];
+    BodyStats s;
+    s.name = body.name;
+    s.num_nodes = 2;
+    s.mass = body.mass;
+    s.center_of_mass = body.pose.center;
+    const Eigen::Vector3d v = m_v.segment<3>(3 * body.linear_node), w = m_v.segment<3>(3 * body.linear_node + 3);
+    s.momentum = body.mass * v;
+    s.kinetic_energy = 0.5 * body.mass * v.squaredNorm() + 0.5 * w.dot(body.world_inertia() * w);
     out.push_back(std::move(s));
   }
   return out;

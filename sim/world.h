@@ -1,23 +1,38 @@
 #pragma once
 // sim::World: built once from a plain WorldDesc, then stepped. A step is a
-// short list of timed stages (ARCHITECTURE.md): assemble -> solve ->
-// integrate -> check health. Numerical trouble is reported in the StepReport,
-// never thrown. DoF layout: one global vector of 3 entries per node for
-// positions and velocities; each body owns a node range. Later issues add
-// rigid bodies, collision and the contact solver as further stages.
+// short list of timed stages (ARCHITECTURE.md): assemble -> collide -> solve
+// -> integrate -> check health. Numerical trouble is reported in the
+// StepReport, never thrown.
+//
+// DoF layout: one global vector of 3 entries per node for positions and
+// velocities. Deformable bodies own node ranges first, in description order;
+// then each dynamic rigid body owns two nodes: its linear velocity (position
+// entry: the centre of mass, m) and its angular velocity (position entry: the
+// rotation vector angle * axis of its orientation, rad). Kinematic and fixed
+// bodies and planes have no DoFs.
+//
+// Collide: every mesh body is a collision surface (deformable: the embedded
+// surface; rigid, kinematic, fixed: the transformed mesh), moving from its
+// positions at the start of the step to those predicted by the contact-free
+// solve; planes are analytic. Solve: without candidates the contact-free
+// solve stands; otherwise solve_contacts runs on the rows of sim/contact,
+// warm-started from the last step's multipliers.
 #include <Eigen/Core>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "sim/contact/contact_model.h"
 #include "sim/fem/block_sparse.h"
 #include "sim/fem/deformable_body.h"
 #include "sim/fem/pcg.h"
+#include "sim/rigid/rigid_body.h"
 #include "sim/world_desc.h"
 
 namespace recoil::sim {
 
 class EmbreeDevice;
+class CollisionDetector;
 
 
 enum class StepStatus { ok, nan, inverted, energy_blowup };
@@ -100,10 +115,14 @@ class World {
   double dt() const { return m_dt; }
   int num_bodies() const { return static_cast<int>(m_bodies.size()); }
   const DeformableBody& body(int i) const { return m_bodies[static_cast<size_t>(i)]; }
-  // Global DoF vectors: 3 per node, bodies in order.
+  // Rigid bodies of every motion, in description order.
+  int num_rigid_bodies() const { return static_cast<int>(m_rigid.size()); }
+  const RigidBody& rigid_body(int i) const { return m_rigid[static_cast<size_t>(i)]; }
+  // Global DoF vectors: 3 per node, layout above.
   const Eigen::VectorXd& positions() const { return m_x; }
   const Eigen::VectorXd& velocities() const { return m_v; }
-  // Replaces positions and velocities (3 per node, same layout), e.g. to
+  // Replaces positions and velocities (3 per node, same layout; rigid bodies
+  // take centre, rotation vector, velocity and angular velocity), e.g. to
   // restart from a saved state or to start deformed. Pinned nodes keep
   // whatever they are given. RECOIL_CHECKs the sizes. The energy reference of
   // the blow-up check restarts from the new state unless told otherwise.
@@ -114,23 +133,37 @@ class World {
 
  private:
   void assemble();
-  PcgResult solve();
+  // The contact stage: candidates for the contact-free prediction in m_dv,
+  // then the contact solve (m_dv in: contact-free, out: with contacts).
+  void collide_and_solve(StepReport& report);
+  std::vector<ContactSurface> contact_surfaces() const;
   void integrate();
   void check_health(StepReport& report);
-  // Kinetic + elastic + gravitational energy of a body, J, with the given elastic part.
-  double total_energy(int body, double elastic) const;
+  // Kinetic + elastic + gravitational energy of dynamic body i (deformable
+  // bodies, then dynamic rigid ones), J, with the given elastic part.
+  double total_energy(int i, double elastic) const;
   void reset_energy_reference();
+  // Copies the dynamic rigid bodies' poses into m_x and back.
+  void sync_rigid_positions();
 
   std::unique_ptr<EmbreeDevice> m_device;
+  std::unique_ptr<CollisionDetector> m_detector;
   double m_dt;
   Eigen::Vector3d m_gravity;
   PcgSettings m_solver;
+  ContactSettings m_contact;
   std::vector<DeformableBody> m_bodies;
+  std::vector<double> m_mu_static, m_mu_kinetic;  // per deformable body
+  std::vector<char> m_self_contact;               // per deformable body
+  std::vector<RigidBody> m_rigid;                 // every motion
+  std::vector<int> m_dynamic;                     // indices into m_rigid of the dynamic bodies
+  std::vector<PlaneDesc> m_planes;                // normals normalised
+  ContactMemory m_memory;                         // warm start for the next step
   Eigen::VectorXd m_x, m_v, m_b, m_dv;
   BlockSparseMatrix m_A;
   std::vector<char> m_fixed;                 // per global node
-  std::vector<double> m_energy0, m_energy_scale;  // per body, for the blow-up check
-  std::vector<double> m_elastic;    // per body: elastic energy at the start of the last step (from assembly)
+  std::vector<double> m_energy0, m_energy_scale;  // per dynamic body, for the blow-up check
+  std::vector<double> m_elastic;    // per deformable body: elastic energy at the start of the last step (from assembly)
   double m_time = 0.0;
   WorldCounters m_counters;
 };

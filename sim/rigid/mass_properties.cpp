@@ -1,0 +1,36 @@
+#include "sim/rigid/mass_properties.h"
+
+#include <Eigen/Geometry>
+
+namespace recoil::sim {
+
+MassProperties mass_properties(const TriMesh& mesh, double density) {
+  // Per tetrahedron (0, a, b, c) with D = a.(b x c) (six times its signed
+  // volume): volume D/6, first moment D/24 (a+b+c), second moment
+  // integral of x x^T = D/120 (sum_i v_i v_i^T + s s^T) with s = a+b+c.
+  double volume = 0.0;
+  Eigen::Vector3d first = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (int f = 0; f < mesh.num_triangles(); ++f) {
+    const Eigen::Vector3d a = mesh.vertices.row(mesh.triangles(f, 0)).transpose();
+    const Eigen::Vector3d b = mesh.vertices.row(mesh.triangles(f, 1)).transpose();
+    const Eigen::Vector3d c = mesh.vertices.row(mesh.triangles(f, 2)).transpose();
+    const double d = a.dot(b.cross(c));
+    const Eigen::Vector3d s = a + b + c;
+    volume += d / 6.0;
+    first += d / 24.0 * s;
+    second += d / 120.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
+  }
+  MassProperties out;
+  out.volume = volume;
+  out.mass = density * volume;
+  if (volume == 0.0) return out;
+  out.center = first / volume;
+  // Second moment about the centre, then I = tr(C) 1 - C.
+  const Eigen::Matrix3d c = density * (second - volume * out.center * out.center.transpose());
+  out.inertia = c.trace() * Eigen::Matrix3d::Identity() - c;
+  out.inertia = 0.5 * (out.inertia + out.inertia.transpose()).eval();
+  return out;
+}
+
+}  // namespace recoil::sim

@@ -1,0 +1,21 @@
+#pragma once
+// Mass, centre of mass and inertia tensor of a homogeneous solid bounded by a
+// closed, outward-oriented triangle surface (divergence theorem: the solid is
+// the signed sum of the tetrahedra (origin, a, b, c) over its triangles).
+#include <Eigen/Core>
+
+#include "sim/geometry/tri_mesh.h"
+
+namespace recoil::sim {
+
+struct MassProperties {
+  double volume = 0.0;                                       // m^3 (signed: negative for an inward surface)
+  double mass = 0.0;                                         // kg
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();          // m, centre of mass
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();         // kg m^2, about the centre, in the mesh's axes
+};
+
+// mesh: #V by 3 vertices, #F by 3 triangles (closed). density in kg/m^3.
+MassProperties mass_properties(const TriMesh& mesh, double density);
+
+}  // namespace recoil::sim

@@ -1,0 +1,113 @@
+#include "sim/rigid/rigid_body.h"
+
+#include <cmath>
+
+#include "core/error.h"
+#include "sim/rigid/mass_properties.h"
+
+namespace recoil::sim {
+
+namespace {
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
+  Eigen::Matrix3d s;
+  s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
+  return s;
+}
+
+}  // namespace
+
+Eigen::Matrix3d RigidBody::world_inertia() const {
+  const Eigen::Matrix3d R = rotation();
+  Eigen::Matrix3d I = R * inertia * R.transpose();
+  return 0.5 * (I + I.transpose());
+}
+
+double RigidBody::kinetic_energy() const {
+  if (motion != RigidMotion::dynamic) return 0.0;
+  return 0.5 * mass * velocity.squaredNorm() + 0.5 * angular_velocity.dot(world_inertia() * angular_velocity);
+}
+
+RigidBody build_rigid_body(const RigidBodyDesc& desc, const std::string& where) {
+  if (desc.mesh.empty()) throw bad_input(where + "/mesh: a rigid body needs a surface");
+  if (!desc.mesh.vertices.allFinite()) throw bad_input(where + "/mesh: vertices must be finite");
+  if (!desc.transform.position.allFinite() || !desc.transform.rotation.allFinite() || !desc.velocity.allFinite() ||
+      !desc.angular_velocity.allFinite())
+    throw bad_input(where + ": transform, velocity and angular_velocity must be finite");
+  if (!desc.transform.scale.allFinite() || (desc.transform.scale.array() == 0.0).any())
+    throw bad_input(where + "/transform/scale: must be finite and non-zero");
+  const FrictionDesc& f = desc.friction;
+  if (!(f.static_coefficient >= 0.0) || !(f.kinetic_coefficient >= 0.0) || !std::isfinite(f.static_coefficient) ||
+      !std::isfinite(f.kinetic_coefficient))
+    throw bad_input(where + "/friction: coefficients must be finite and >= 0");
+
+  RigidBody body;
+  body.name = desc.name;
+  body.motion = desc.motion;
+  body.friction = desc.friction;
+  TriMesh mesh = desc.mesh;
+  transform_in_place(mesh, desc.transform.rotation_matrix(), desc.transform.scale, desc.transform.position);
+  body.triangles = mesh.triangles;
+
+  Eigen::Vector3d reference = desc.transform.position;
+  if (desc.motion == RigidMotion::dynamic) {
+    if (!(desc.density > 0.0) || !std::isfinite(desc.density)) throw bad_input(where + "/density: must be > 0");
+    const MassProperties props = mass_properties(mesh, desc.density);
+    if (!(props.volume > 0.0))
+      throw bad_input(where + "/mesh: a dynamic body needs a closed, outward-oriented surface (enclosed volume " +
+                      std::to_string(props.volume) + " m^3)");
+    body.mass = props.mass;
+    body.inertia = props.inertia;
+    reference = props.center;
+    // Initial velocity is given for the reference point of the description
+    // (transform.position); the centre of mass moves with v + w x (c - p).
+    body.velocity = desc.velocity + desc.angular_velocity.cross(props.center - desc.transform.position);
+  } else if (desc.motion == RigidMotion::kinematic) {
+    body.velocity = desc.velocity;
+  }
+  if (desc.motion != RigidMotion::fixed) body.angular_velocity = desc.angular_velocity;
+  body.pose.center = reference;
+  body.local = mesh.vertices.rowwise() - reference.transpose();
+  return body;
+}
+
+RigidPose advance_pose(const RigidPose& pose, const Eigen::Vector3d& velocity, const Eigen::Vector3d& angular_velocity,
+                       double h) {
+  RigidPose out;
+  out.center = pose.center + h * velocity;
+  out.orientation = (from_rotation_vector(h * angular_velocity) * pose.orientation).normalized();
+  return out;
+}
+
+void world_points(const Points& local, const RigidPose& pose, Points& out) {
+  const Eigen::Matrix3d R = pose.orientation.toRotationMatrix();
+  out.resize(local.rows(), 3);
+  for (Eigen::Index i = 0; i < local.rows(); ++i)
+    out.row(i) = (pose.center + R * local.row(i).transpose()).transpose();
+}
+
+Eigen::Vector3d rotation_vector(const Eigen::Quaterniond& q) {
+  const Eigen::AngleAxisd aa(q.normalized());
+  double angle = aa.angle();
+  Eigen::Vector3d axis = aa.axis();
+  if (angle > M_PI) {
+    angle = 2.0 * M_PI - angle;
+    axis = -axis;
+  }
+  return angle * axis;
+}
+
+Eigen::Quaterniond from_rotation_vector(const Eigen::Vector3d& phi) {
+  const double angle = phi.norm();
+  if (angle < 1e-300) return Eigen::Quaterniond::Identity();
+  return Eigen::Quaterniond(Eigen::AngleAxisd(angle, phi / angle));
+}
+
+Eigen::Matrix3d so3_left_jacobian(const Eigen::Vector3d& phi) {
+  const double t = phi.norm();
+  const Eigen::Matrix3d K = skew(phi);
+  if (t < 1e-6) return Eigen::Matrix3d::Identity() + 0.5 * K + (1.0 / 6.0) * K * K;
+  return Eigen::Matrix3d::Identity() + (1.0 - std::cos(t)) / (t * t) * K + (t - std::sin(t)) / (t * t * t) * K * K;
+}
+
+}  // namespace recoil::sim

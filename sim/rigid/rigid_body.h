@@ -1,0 +1,69 @@
+#pragma once
+// Rigid bodies at run time: the pose (centre, orientation quaternion) and
+// velocities of a dynamic, kinematic or fixed body, with its surface kept in
+// body coordinates. The body frame is the world frame at time 0 translated to
+// the reference point: the centre of mass for dynamic bodies, the
+// description's transform.position for kinematic and fixed ones (SPEC.md:
+// kinematic bodies turn about their position).
+//
+// A dynamic body owns two DoF nodes in the World (METHOD.md section 1): the
+// linear velocity (A block m I) and the angular velocity (A block I_world =
+// R I_body R^T). Gyroscopic term: the solve is linear in omega with I_world
+// frozen at the start of the step; after the pose update omega is recomputed
+// from the angular momentum, omega = I_world(t+h)^-1 I_world(t) omega+, so a
+// free body keeps its angular momentum exactly (the effect of -omega x I omega
+// over the step) and no explicit torque can pump energy in.
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <string>
+
+#include "sim/geometry/tri_mesh.h"
+#include "sim/world_desc.h"
+
+namespace recoil::sim {
+
+struct RigidPose {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();              // m, world
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body -> world, unit
+};
+
+struct RigidBody {
+  std::string name;
+  RigidMotion motion = RigidMotion::dynamic;
+  Points local;           // #V by 3, surface vertices relative to the reference point, body frame
+  Triangles triangles;    // #F by 3
+  double mass = 0.0;                                      // kg (dynamic only)
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();      // kg m^2, body frame, about the centre of mass
+  FrictionDesc friction;
+  RigidPose pose;
+  Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // m/s, world, of the reference point
+  Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world
+  int linear_node = -1;   // dynamic: DoF node of the velocity; the angular velocity is node linear_node + 1
+
+  Eigen::Matrix3d rotation() const { return pose.orientation.toRotationMatrix(); }
+  // R I R^T, kg m^2.
+  Eigen::Matrix3d world_inertia() const;
+  double kinetic_energy() const;
+};
+
+// Throws bad_input naming `where` (e.g. "rigid_bodies/2") for an invalid
+// description: empty or non-finite mesh, a dynamic body with non-positive
+// density or enclosed volume.
+RigidBody build_rigid_body(const RigidBodyDesc& desc, const std::string& where);
+
+// The pose after moving for h seconds at constant velocity and angular
+// velocity: c + h v, exp(h w) q (exact rotation, then re-normalised).
+RigidPose advance_pose(const RigidPose& pose, const Eigen::Vector3d& velocity, const Eigen::Vector3d& angular_velocity,
+                       double h);
+
+// World positions of body-frame points `local` (#V by 3) at `pose`. out: #V by 3.
+void world_points(const Points& local, const RigidPose& pose, Points& out);
+
+// The rotation vector (angle * axis, rad) of a unit quaternion and back.
+Eigen::Vector3d rotation_vector(const Eigen::Quaterniond& q);
+Eigen::Quaterniond from_rotation_vector(const Eigen::Vector3d& phi);
+
+// Left Jacobian of SO(3) at phi: d/dphi (exp(phi) r) = -[exp(phi) r]x J_l(phi).
+Eigen::Matrix3d so3_left_jacobian(const Eigen::Vector3d& phi);
+
+}  // namespace recoil::sim

@@ -1,0 +1,201 @@
+// World::step and its stages: assemble -> collide -> solve -> integrate -> health.
+#include <Eigen/Cholesky>
+#include <chrono>
+
+#include "core/check.h"
+#include "sim/collision/collision_detector.h"
+#include "sim/fem/assembly.h"
+#include "sim/world.h"
+
+namespace recoil::sim {
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// True when no contact is warm-started active and every normal row holds
+// at dv (J_n dv >= rhs_normal: no gap closes below zero).
+bool free_solution_is_feasible(const ContactProblem& problem, const Eigen::VectorXd& dv) {
+  for (size_t k = 0; k < problem.rows.size(); ++k) {
+    if (problem.states[k].mode != ContactMode::inactive) return false;
+    const ContactRows& rows = problem.rows[k];
+    double jdv = 0.0;
+    for (size_t i = 0; i < rows.nodes.size(); ++i) jdv += rows.blocks[i].row(0).dot(dv.segment<3>(3 * rows.nodes[i]));
+    if (jdv < rows.rhs_normal) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+StepReport World::step() {
+  StepReport report;
+  const auto start = Clock::now();
+  auto t = Clock::now();
+  assemble();
+  report.profile.assemble = ms_since(t);
+
+  // The contact-free solve: the prediction the collision search uses, and
+  // the step's answer when there are no candidates.
+  t = Clock::now();
+  const PcgResult pcg = solve_pcg(m_A, m_b, m_dv, m_solver);
+  report.profile.solve = ms_since(t);
+  report.solver_iterations = pcg.iterations;
+  report.solver_residual = pcg.relative_residual;
+  report.solver_converged = pcg.converged;
+
+  collide_and_solve(report);
+
+  t = Clock::now();
+  integrate();
+  report.profile.integrate = ms_since(t);
+
+  t = Clock::now();
+  check_health(report);
+  report.profile.health = ms_since(t);
+  report.profile.total = ms_since(start);
+
+  m_time += m_dt;
+  ++m_counters.steps;
+  if (!report.solver_converged) ++m_counters.solver_not_converged;
+  report.step = m_counters.steps;
+  report.time = m_time;
+  return report;
+}
+
+void World::assemble() {
+  m_A.set_zero();
+  m_b = Eigen::VectorXd::Zero(m_x.size());
+  for (size_t i = 0; i < m_bodies.size(); ++i)
+    m_elastic[i] = assemble_body(m_bodies[i], m_x, m_v, m_dt, m_gravity, m_A, m_b);
+  // Rigid bodies: A = diag(m I, I_world), b = (h m g, 0); no stiffness, no
+  // gyroscopic torque (integrate() keeps the angular momentum instead).
+  for (int r : m_dynamic) {
+    const RigidBody& body = m_rigid[static_cast<size_t>(r)];
+    const int n = body.linear_node;
+    m_A.block(m_A.find(n, n)) = body.mass * Eigen::Matrix3d::Identity();
+    m_A.block(m_A.find(n + 1, n + 1)) = body.world_inertia();
+    m_b.segment<3>(3 * n) = m_dt * body.mass * m_gravity;
+  }
+  m_A.fix(m_fixed);
+}
+
+std::vector<ContactSurface> World::contact_surfaces() const {
+  std::vector<ContactSurface> out;
+  for (size_t i = 0; i < m_bodies.size(); ++i) {
+    const DeformableBody& body = m_bodies[i];
+    ContactSurface s;
+    s.kind = SurfaceKind::deformable;
+    s.mu_static = m_mu_static[i];
+    s.mu_kinetic = m_mu_kinetic[i];
+    s.self_contact = m_self_contact[i] != 0;
+    s.triangles = body.surface.triangles;
+    s.embedding = &body.embedding;
+    s.tets = &body.rest.tets;
+    s.pinned = &body.pinned;
+    s.node_offset = body.node_offset;
+    out.push_back(std::move(s));
+  }
+  for (const RigidBody& body : m_rigid) {
+    ContactSurface s;
+    s.kind = body.motion == RigidMotion::dynamic     ? SurfaceKind::rigid
+             : body.motion == RigidMotion::kinematic ? SurfaceKind::kinematic
+                                                     : SurfaceKind::static_body;
+    s.mu_static = body.friction.static_coefficient;
+    s.mu_kinetic = body.friction.kinetic_coefficient;
+    s.triangles = body.triangles;
+    s.local = &body.local;
+    s.pose = body.pose;
+    s.velocity = body.velocity;
+    s.angular_velocity = body.angular_velocity;
+    s.linear_node = body.linear_node;
+    out.push_back(std::move(s));
+  }
+  return out;
+}
+
+void World::collide_and_solve(StepReport& report) {
+  // A state that is already broken is reported by the health stage; the
+  // collision search needs finite positions.
+  if (!m_x.allFinite() || !m_v.allFinite() || !m_dv.allFinite()) {
+    m_memory.clear();
+    return;
+  }
+  auto t = Clock::now();
+  std::vector<ContactPlane> planes;
+  for (size_t i = 0; i < m_planes.size(); ++i) {
+    ContactPlane p;
+    p.plane.body = static_cast<int>(i);
+    p.plane.point = m_planes[i].point;
+    p.plane.normal = m_planes[i].normal;
+    p.mu_static = m_planes[i].friction.static_coefficient;
+    p.mu_kinetic = m_planes[i].friction.kinetic_coefficient;
+    planes.push_back(p);
+  }
+  ContactModel model(contact_surfaces(), std::move(planes), DofState{&m_x, &m_v, m_dt}, m_contact.margin,
+                     m_detector.get());
+  const std::vector<ContactCandidate> candidates =
+      m_detector->detect(model.collision_surfaces(m_dv), model.collision_planes());
+  report.profile.collide = ms_since(t);
+  if (candidates.empty()) {
+    m_memory.clear();
+    return;
+  }
+
+  t = Clock::now();
+  ContactProblem problem;
+  problem.A = &m_A;
+  problem.b = m_b;
+  // Rows linearised at the contact-free prediction; the solver starts from it too.
+  model.build(candidates, m_dv, m_memory, problem);
+  report.contacts = model.num_contacts();
+  if (free_solution_is_feasible(problem, m_dv)) {
+    // Every candidate stays apart with the contact-free velocities and none
+    // carries an impulse: that solution is the constrained optimum too.
+    model.remember(problem, m_memory);
+    report.max_penetration = model.max_penetration(m_dv);
+    report.profile.solve += ms_since(t);
+    return;
+  }
+  const ContactSolverStats stats = solve_contacts(problem, m_contact.solver, m_dv, &model);
+  model.remember(problem, m_memory);
+  report.max_penetration = model.max_penetration(m_dv);
+  const double inner_collide = model.collide_ms();
+  report.profile.collide += inner_collide;
+  report.profile.solve += ms_since(t) - inner_collide;
+
+  report.active = stats.active;
+  report.sticking = stats.sticking;
+  report.sliding = stats.sliding;
+  report.solver_iterations = stats.iterations;
+  report.solver_restarts = stats.restarts;
+  report.solver_residual = stats.residual;
+  report.solver_converged = stats.converged;
+}
+
+void World::integrate() {
+  m_v += m_dv;
+  const int fem_nodes = m_bodies.empty() ? 0 : m_bodies.back().node_offset + m_bodies.back().num_nodes;
+  m_x.head(3 * fem_nodes) += m_dt * m_v.head(3 * fem_nodes);
+  for (RigidBody& body : m_rigid) {
+    if (body.motion == RigidMotion::fixed) continue;
+    if (body.motion == RigidMotion::kinematic) {
+      body.pose = advance_pose(body.pose, body.velocity, body.angular_velocity, m_dt);
+      continue;
+    }
+    const int n = body.linear_node;
+    const Eigen::Vector3d w = m_v.segment<3>(3 * n + 3);
+    const Eigen::Vector3d momentum = body.world_inertia() * w;  // L = I(t) w+
+    body.pose = advance_pose(body.pose, m_v.segment<3>(3 * n), w, m_dt);
+    // Gyroscopic effect: keep L with the turned inertia, w = I(t+h)^-1 L.
+    m_v.segment<3>(3 * n + 3) = body.world_inertia().ldlt().solve(momentum);
+    body.velocity = m_v.segment<3>(3 * n);
+    body.angular_velocity = m_v.segment<3>(3 * n + 3);
+  }
+  sync_rigid_positions();
+}
+
+}  // namespace recoil::sim

@@ -1,0 +1,170 @@
+#pragma once
+// Contact scenes shared by the validation tests and the contact benchmark
+// (Box2D style): small WorldDescs with the parameters each check needs.
+// Conventions: gravity -y; an incline of angle theta descends along +x with
+// normal (sin theta, cos theta, 0), so the down-slope direction is
+// (cos theta, -sin theta, 0).
+#include <cmath>
+#include <string>
+
+#include "sim/geometry/mesh_import.h"
+#include "sim/geometry/primitives.h"
+#include "sim/world_desc.h"
+
+namespace recoil::sim::scenes {
+
+constexpr double kPi = 3.14159265358979323846;
+
+inline FrictionDesc friction(double mu_static, double mu_kinetic) { return {mu_static, mu_kinetic}; }
+
+inline PlaneDesc ground(FrictionDesc f = {}) {
+  PlaneDesc p;
+  p.friction = f;
+  return p;
+}
+
+// A plane through the origin tilted by theta (radians) about z.
+inline PlaneDesc incline(double theta, FrictionDesc f) {
+  PlaneDesc p = ground(f);
+  p.normal = Eigen::Vector3d(std::sin(theta), std::cos(theta), 0.0);
+  return p;
+}
+inline Eigen::Vector3d incline_normal(double theta) { return {std::sin(theta), std::cos(theta), 0.0}; }
+inline Eigen::Vector3d downslope(double theta) { return {std::cos(theta), -std::sin(theta), 0.0}; }
+
+inline RigidBodyDesc rigid_box(const std::string& name, const Eigen::Vector3d& size, const Eigen::Vector3d& position,
+                               FrictionDesc f = {}, double density = 1000.0) {
+  RigidBodyDesc b;
+  b.name = name;
+  b.mesh = make_box(size, 1);
+  b.transform.position = position;
+  b.density = density;
+  b.friction = f;
+  return b;
+}
+
+inline RigidBodyDesc rigid_sphere(const std::string& name, double radius, const Eigen::Vector3d& position,
+                                  FrictionDesc f = {}, int subdivisions = 3) {
+  RigidBodyDesc b = rigid_box(name, Eigen::Vector3d::Ones(), position, f);
+  b.mesh = make_sphere(radius, subdivisions);
+  return b;
+}
+
+inline Material jelly(double youngs_modulus = 2e4, double density = 1000.0) {
+  Material m;
+  m.youngs_modulus = youngs_modulus;
+  m.poisson_ratio = 0.3;
+  m.density = density;
+  m.damping_alpha = 0.0;
+  m.damping_beta = 0.01;
+  return m;
+}
+
+inline DeformableBodyDesc soft_box(const std::string& name, const Eigen::Vector3d& size, int resolution,
+                                   const Material& material, const Eigen::Vector3d& position, FrictionDesc f = {}) {
+  DeformableBodyDesc b;
+  b.name = name;
+  b.mesh = make_box(size, 1);
+  b.resolution = resolution;
+  b.material = material;
+  b.transform.position = position;
+  b.static_friction = f.static_coefficient;
+  b.kinetic_friction = f.kinetic_coefficient;
+  b.self_contact = false;
+  return b;
+}
+
+inline DeformableBodyDesc soft_sphere(const std::string& name, double radius, int resolution, const Material& material,
+                                      const Eigen::Vector3d& position, FrictionDesc f = {}) {
+  DeformableBodyDesc b = soft_box(name, Eigen::Vector3d::Ones(), resolution, material, position, f);
+  b.mesh = make_sphere(radius, 2);
+  return b;
+}
+
+// A body resting on the incline: rotate about z by -theta, centre at
+// `along` metres down the slope from the origin, lifted by half its height
+// plus `gap` along the normal.
+template <typename Desc>
+void place_on_incline(Desc& body, double theta, double half_height, double along, double gap = 1e-4) {
+  body.transform.rotation = Eigen::Vector3d(0.0, 0.0, -theta * 180.0 / kPi);
+  body.transform.position = along * downslope(theta) + (half_height + gap) * incline_normal(theta);
+}
+
+inline WorldDesc base_world(double dt) {
+  WorldDesc w;
+  w.dt = dt;
+  w.contact.margin = 0.002;
+  w.contact.solver.tolerance = 1e-7;
+  return w;
+}
+
+// Five rigid boxes (edge `size`) stacked on the ground.
+inline WorldDesc box_stack(int count = 5, double size = 0.1, double dt = 0.01) {
+  WorldDesc w = base_world(dt);
+  w.planes.push_back(ground(friction(0.6, 0.6)));
+  for (int i = 0; i < count; ++i)
+    w.rigid_bodies.push_back(rigid_box("box" + std::to_string(i), Eigen::Vector3d::Constant(size),
+                                       Eigen::Vector3d(0.0, (i + 0.5) * size + (i + 1) * 2e-4, 0.0),
+                                       friction(0.6, 0.6)));
+  return w;
+}
+
+// Three jelly cubes (edge `size`) stacked on the ground.
+inline WorldDesc jelly_stack(int count = 3, double size = 0.1, int resolution = 3, double dt = 0.01) {
+  WorldDesc w = base_world(dt);
+  w.planes.push_back(ground(friction(0.6, 0.6)));
+  for (int i = 0; i < count; ++i)
+    w.bodies.push_back(soft_box("jelly" + std::to_string(i), Eigen::Vector3d::Constant(size), resolution, jelly(5e4),
+                                Eigen::Vector3d(0.0, (i + 0.5) * size + (i + 1) * 5e-4, 0.0), friction(0.6, 0.6)));
+  return w;
+}
+
+// Eight deformable bunnies (about `height` tall) dropped on top of each other.
+inline WorldDesc bunny_pile(const std::string& bunny_path, int count = 8, double height = 0.12, int resolution = 4,
+                            double dt = 0.005) {
+  WorldDesc w = base_world(dt);
+  w.planes.push_back(ground(friction(0.5, 0.5)));
+  TriMesh bunny = import_surface(bunny_path);
+  const Aabb box = bounding_box(bunny);
+  const double scale = height / box.extent().maxCoeff();
+  bunny.vertices = ((bunny.vertices.rowwise() - box.center().transpose()) * scale).eval();
+  for (int i = 0; i < count; ++i) {
+    DeformableBodyDesc b;
+    b.name = "bunny" + std::to_string(i);
+    b.mesh = bunny;
+    b.resolution = resolution;
+    b.material = jelly(5e4);
+    b.self_contact = false;
+    const double x = 0.03 * ((i % 2) ? 1.0 : -1.0), z = 0.03 * ((i / 2 % 2) ? 1.0 : -1.0);
+    b.transform.position = Eigen::Vector3d(x, 0.5 * height + 0.01 + i * (height + 0.01), z);
+    b.transform.rotation = Eigen::Vector3d(0.0, 45.0 * i, 0.0);
+    w.bodies.push_back(std::move(b));
+  }
+  return w;
+}
+
+// A soft block pushed down between two kinematic cylinders (axes along z)
+// turning inwards at `omega` rad/s, no gravity needed beyond the push.
+inline WorldDesc rollers(double omega = 6.0, int resolution = 4, double dt = 0.005) {
+  WorldDesc w = base_world(dt);
+  const double radius = 0.05, gap = 0.06;
+  for (int side = -1; side <= 1; side += 2) {
+    RigidBodyDesc c;
+    c.name = side < 0 ? "roller_left" : "roller_right";
+    c.motion = RigidMotion::kinematic;
+    c.mesh = make_cylinder(radius, 0.2, 32);
+    c.transform.rotation = Eigen::Vector3d(90.0, 0.0, 0.0);
+    c.transform.position = Eigen::Vector3d(side * (radius + 0.5 * gap), 0.0, 0.0);
+    // The faces towards the gap move down: w_z = -omega on the left, +omega on the right.
+    c.angular_velocity = Eigen::Vector3d(0.0, 0.0, side * omega);
+    c.friction = friction(0.8, 0.8);
+    w.rigid_bodies.push_back(std::move(c));
+  }
+  DeformableBodyDesc b = soft_box("dough", Eigen::Vector3d(0.08, 0.08, 0.08), resolution, jelly(3e4),
+                                  Eigen::Vector3d(0.0, 0.095, 0.0), friction(0.8, 0.8));
+  b.velocity = Eigen::Vector3d(0.0, -0.3, 0.0);
+  w.bodies.push_back(std::move(b));
+  return w;
+}
+
+}  // namespace recoil::sim::scenes

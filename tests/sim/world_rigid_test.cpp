@@ -1,0 +1,95 @@
+// The World with rigid bodies: the DoF layout, free flight (linear and
+// angular momentum), kinematic motion, surfaces and stats, bad input.
+#include <gtest/gtest.h>
+
+#include <iostream>
+
+#include "core/error.h"
+#include "sim/world.h"
+#include "tests/scenes/contact_scenes.h"
+
+namespace recoil::sim {
+namespace {
+
+using namespace scenes;
+
+TEST(WorldRigid, FreeFlightKeepsMomentaAndFollowsGravity) {
+  WorldDesc w = base_world(0.01);
+  RigidBodyDesc b = rigid_box("brick", {0.3, 0.1, 0.05}, {0.0, 1.0, 0.0});
+  b.velocity = {0.5, 2.0, 0.0};
+  b.angular_velocity = {1.0, 4.0, 0.5};  // tumbling about no principal axis
+  w.rigid_bodies.push_back(b);
+  World world(w);
+  ASSERT_EQ(world.positions().size(), 6);
+  const Eigen::Vector3d L0 = world.rigid_body(0).world_inertia() * world.rigid_body(0).angular_velocity;
+  const double e0 = world.stats()[0].kinetic_energy - 0.5 * world.stats()[0].mass * b.velocity.squaredNorm();
+  double worst_v = 0.0, worst_L = 0.0;
+  for (int i = 0; i < 100; ++i) {
+    const StepReport r = world.step();
+    ASSERT_EQ(r.status, StepStatus::ok);
+    EXPECT_EQ(r.contacts, 0);
+    const RigidBody& body = world.rigid_body(0);
+    const Eigen::Vector3d v_expected = b.velocity + world.time() * w.gravity;
+    worst_v = std::max(worst_v, (body.velocity - v_expected).norm());
+    worst_L = std::max(worst_L, (body.world_inertia() * body.angular_velocity - L0).norm() / L0.norm());
+    EXPECT_NEAR(body.pose.orientation.norm(), 1.0, 1e-14);
+  }
+  const RigidBody& body = world.rigid_body(0);
+  const double e1 = 0.5 * body.angular_velocity.dot(body.world_inertia() * body.angular_velocity);
+  std::cout << "rigid free flight: |v - (v0 + g t)| " << worst_v << " m/s, relative angular momentum drift " << worst_L
+            << ", rotational energy " << e0 << " -> " << e1 << " J\n";
+  EXPECT_LT(worst_v, 1e-12);
+  EXPECT_LT(worst_L, 1e-10);
+  EXPECT_LT(e1, e0 * 1.05);
+  // The position entries mirror the pose.
+  EXPECT_LT((world.positions().head<3>() - body.pose.center).norm(), 1e-15);
+}
+
+TEST(WorldRigid, KinematicAndFixedBodiesFollowTheirScript) {
+  WorldDesc w = base_world(0.01);
+  RigidBodyDesc k = rigid_box("roller", {0.1, 0.1, 0.1}, {0.0, 0.0, 0.0});
+  k.motion = RigidMotion::kinematic;
+  k.velocity = {1.0, 0.0, 0.0};
+  k.angular_velocity = {0.0, kPi, 0.0};
+  w.rigid_bodies.push_back(k);
+  RigidBodyDesc f = rigid_box("wall", {0.1, 0.1, 0.1}, {0.0, -1.0, 0.0});
+  f.motion = RigidMotion::fixed;
+  w.rigid_bodies.push_back(f);
+  w.gravity.setZero();  // the jelly floats far from the others
+  w.bodies.push_back(soft_box("jelly", {0.1, 0.1, 0.1}, 2, jelly(), {0.0, 3.0, 0.0}));
+  World world(w);
+  for (int i = 0; i < 100; ++i) ASSERT_EQ(world.step().status, StepStatus::ok);
+  const std::vector<BodySurface> s = world.surfaces();
+  ASSERT_EQ(s.size(), 3u);
+  EXPECT_EQ(s[0].kind, BodyKind::deformable);
+  EXPECT_EQ(s[1].kind, BodyKind::kinematic);
+  EXPECT_EQ(s[2].kind, BodyKind::fixed);
+  // After 1 s: moved 1 m along x and turned half a turn about y (a box looks the same, its vertices swapped).
+  EXPECT_NEAR(world.rigid_body(0).pose.center.x(), 1.0, 1e-12);
+  EXPECT_NEAR(std::abs(rotation_vector(world.rigid_body(0).pose.orientation).y()), kPi, 1e-9);
+  EXPECT_NEAR(s[2].positions.col(1).maxCoeff(), -0.95, 1e-15);
+  // stats(): dynamic bodies only.
+  ASSERT_EQ(world.stats().size(), 1u);
+  EXPECT_EQ(world.stats()[0].name, "jelly");
+}
+
+TEST(WorldRigid, RejectsBadInput) {
+  WorldDesc w = base_world(0.01);
+  w.planes.push_back(ground());
+  w.planes.back().normal.setZero();
+  EXPECT_THROW(World{w}, Error);
+  w = base_world(0.01);
+  w.contact.margin = 0.0;
+  EXPECT_THROW(World{w}, Error);
+  w = base_world(0.01);
+  w.rigid_bodies.push_back(rigid_box("b", {0.1, 0.1, 0.1}, {0, 0, 0}, friction(-1.0, 0.5)));
+  try {
+    World world(w);
+    FAIL() << "negative friction accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("rigid_bodies/0/friction"), std::string::npos) << e.what();
+  }
+}
+
+}  // namespace
+}  // namespace recoil::sim
