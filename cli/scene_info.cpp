@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "cli/scene_parser.h"
+#include "cli/scene_runner.h"
 #include "core/error.h"
 #include "sim/world.h"
 
@@ -17,7 +18,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
   try {
     world = std::make_unique<sim::World>(scene.world);
   } catch (const Error& e) {
-    throw Error(e.kind(), file.string() + ": " + e.what());
+    throw scene_error(e, scene);
   }
   nlohmann::json bodies = nlohmann::json::array();
   for (const SceneBody& b : scene.bodies) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <sstream>
 #include <thread>
@@ -33,24 +34,37 @@ double ms_since(Clock::time_point start) {
 // body stays inverted this long (simulated seconds), SPEC's "beyond recovery".
 constexpr double kInversionGrace = 0.1;
 
-// World errors name "bodies/i" by index among the deformable bodies; the user
-// knows the scene's /bodies/j, so translate and add the file.
+}  // namespace
+
 Error scene_error(const Error& e, const SceneDesc& scene) {
-  std::string message = e.what();
+  const std::string message = e.what();
   const std::string file = scene.file.empty() ? scene.name : scene.file.string();
-  if (message.rfind("bodies/", 0) == 0) {
-    const size_t end = message.find_first_not_of("0123456789", 7);
-    const int index = std::atoi(message.substr(7, end - 7).c_str());
+  struct Prefix {
+    const char* text;
+    bool (*matches)(SceneBodyType);
+  };
+  const Prefix prefixes[] = {
+      {"bodies/", [](SceneBodyType t) { return t == SceneBodyType::deformable; }},
+      {"rigid_bodies/",
+       [](SceneBodyType t) {
+         return t == SceneBodyType::rigid || t == SceneBodyType::kinematic || t == SceneBodyType::fixed;
+       }},
+      {"planes/", [](SceneBodyType t) { return t == SceneBodyType::plane; }},
+  };
+  for (const Prefix& prefix : prefixes) {
+    const size_t length = std::strlen(prefix.text);
+    if (message.rfind(prefix.text, 0) != 0) continue;
+    const size_t end = std::min(message.find_first_not_of("0123456789", length), message.size());
+    const int index = std::atoi(message.substr(length, end - length).c_str());
     for (const SceneBody& body : scene.bodies)
-      if (body.type == SceneBodyType::deformable && body.index == index) {
-        message = body.pointer + message.substr(end);
-        break;
-      }
-    return Error(e.kind(), file + ": " + message);
+      if (prefix.matches(body.type) && body.index == index)
+        return Error(e.kind(), file + ": " + body.pointer + message.substr(end));
   }
   if (message.rfind("simulation/", 0) == 0) return Error(e.kind(), file + ": /" + message);
   return Error(e.kind(), file + ": " + message);
 }
+
+namespace {
 
 void write_text_file(const fs::path& path, const std::string& text) {
   const fs::path tmp = path.string() + ".tmp";

@@ -10,6 +10,7 @@
 
 #include "cli/commands.h"
 #include "cli/scene_desc.h"
+#include "core/error.h"
 
 namespace recoil::cli {
 
@@ -36,6 +37,11 @@ struct RunResult {
 // (created). A failed simulation throws Error(sim_failed) naming the frame and
 // the body after the frames so far are on disk and run.json records it.
 RunResult run_scene(const RunJob& job, const GlobalOptions& global);
+
+// World errors name "bodies/i", "rigid_bodies/i" or "planes/i" by index in
+// the WorldDesc lists; the user knows the scene's /bodies/j: the same error
+// naming the scene file and that pointer.
+Error scene_error(const Error& e, const SceneDesc& scene);
 
 // Steps at which frame k (1-based) is taken: round((k - 1) / (fps dt)).
 long frame_step(int frame, double fps, double dt);

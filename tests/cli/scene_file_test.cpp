@@ -11,6 +11,7 @@
 #include "cli/json_cursor.h"
 #include "cli/scene_bodies.h"
 #include "cli/scene_parser.h"
+#include "cli/scene_runner.h"
 #include "core/error.h"
 #include "tests/test_support.h"
 
@@ -107,6 +108,21 @@ TEST(SceneFile, NearMissSuggestions) {
   EXPECT_EQ(cli::near_miss("youngs_modulos", {"model", "youngs_modulus", "density"}), "youngs_modulus");
   EXPECT_EQ(cli::near_miss("frction", {"friction", "transform"}), "friction");
   EXPECT_EQ(cli::near_miss("banana", {"friction", "transform"}), "");
+}
+
+TEST(SceneFile, WorldErrorsAreTranslatedToTheScenePointer) {
+  const fs::path dir = scratch_dir("scene_world_error");
+  write_file(dir / "w.json", R"({"recoil": 1, "bodies": [
+    {"type": "plane"}, {"type": "rigid", "primitive": {"sphere": 0.1}},
+    {"type": "deformable", "primitive": {"sphere": 0.1}}, {"type": "deformable", "primitive": {"sphere": 0.1}}]})");
+  const cli::SceneDesc scene = cli::load_scene(dir / "w.json");
+  const std::string file = (dir / "w.json").string();
+  EXPECT_EQ(std::string(cli::scene_error(bad_input("bodies/1/material: bad"), scene).what()),
+            file + ": /bodies/3/material: bad");
+  EXPECT_EQ(std::string(cli::scene_error(bad_input("rigid_bodies/0: not closed"), scene).what()),
+            file + ": /bodies/1: not closed");
+  EXPECT_EQ(std::string(cli::scene_error(bad_input("simulation/dt: must be > 0"), scene).what()),
+            file + ": /simulation/dt: must be > 0");
 }
 
 TEST(FrameSpec, RangesStepsAndLists) {
