@@ -1,6 +1,7 @@
 #include "cli/json_cursor.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <sstream>
 
