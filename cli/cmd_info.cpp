@@ -1,10 +1,12 @@
 // `recoil info MESH [--json]`: what a mesh is made of, before anyone simulates it.
+#include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "cli/commands.h"
+#include "cli/scene_info.h"
 #include "sim/geometry/mesh_import.h"
 #include "sim/geometry/mesh_stats.h"
 
@@ -21,6 +23,7 @@ nlohmann::json to_json(const sim::Aabb& box) {
 }
 
 int run_info(const InfoOptions& options) {
+  if (std::filesystem::path(options.path).extension() == ".json") return print_scene_info(options.path, options.json);
   const sim::TriMesh mesh = sim::import_surface(options.path);
   const sim::MeshStats stats = sim::compute_mesh_stats(mesh);
   const Eigen::Vector3d size = stats.bounds.extent();
@@ -64,14 +67,16 @@ int run_info(const InfoOptions& options) {
 
 void add_info_command(CLI::App& app, const GlobalOptions&, Action& action) {
   auto options = std::make_shared<InfoOptions>();
-  CLI::App* cmd = app.add_subcommand("info", "Print a mesh's statistics: size, watertightness, volume");
-  cmd->add_option("MESH", options->path, "Mesh file (OBJ, PLY, STL, glTF, Collada, FBX, ... anything assimp reads)")
+  CLI::App* cmd = app.add_subcommand("info", "Print a mesh's or a scene's statistics: size, watertightness, volume, bodies");
+  cmd->add_option("MESH|SCENE", options->path,
+                  "Mesh file (OBJ, PLY, STL, glTF, Collada, FBX, ... anything assimp reads) or scene file (.json)")
       ->required();
   cmd->add_flag("--json", options->json, "Print the statistics as one JSON object on stdout");
   cmd->footer(
       "Examples:\n"
       "  recoil info assets/meshes/bunny.obj\n"
       "  recoil info model.glb --json | jq .volume\n"
+      "  recoil info assets/scenes/bunny-drop.json       # bodies, tetrahedra, masses, frames\n"
       "A mesh must be watertight (closed, manifold, consistently oriented) to become a deformable or rigid body.\n");
   cmd->callback([options, &action] { action = [options] { return run_info(*options); }; });
 }

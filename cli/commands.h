@@ -18,5 +18,7 @@ using Action = std::function<int()>;
 void add_info_command(CLI::App& app, const GlobalOptions& global, Action& action);
 void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& action);
 void add_compare_command(CLI::App& app, const GlobalOptions& global, Action& action);
+void add_run_command(CLI::App& app, const GlobalOptions& global, Action& action);
+void add_drop_command(CLI::App& app, const GlobalOptions& global, Action& action);
 
 }  // namespace recoil::cli

@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
   app.add_flag("-q,--quiet", global.quiet, "No progress bar or summary lines")->configurable(false);
   app.add_flag("--log-json", global.log_json, "Machine-readable progress lines (JSON) on stderr");
   cli::Action action;
+  cli::add_run_command(app, global, action);
+  cli::add_drop_command(app, global, action);
   cli::add_turntable_command(app, global, action);
   cli::add_info_command(app, global, action);
   cli::add_compare_command(app, global, action);

@@ -1,0 +1,122 @@
+#include "cli/drop_scene.h"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+#include "core/error.h"
+#include "sim/fem/deformable_body.h"
+#include "sim/geometry/mesh_import.h"
+
+namespace recoil::cli {
+namespace fs = std::filesystem;
+namespace {
+
+// Meshes whose longest side lies outside this range (metres) are taken to be
+// in other units and rescaled to kTargetSize.
+constexpr double kMinSize = 0.05, kMaxSize = 2.0, kTargetSize = 0.3;
+
+struct Source {
+  std::string path;    // absolute
+  std::string stem;
+  double scale = 1.0;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // local bounding-box centre
+  double bottom = 0.0;                               // local min y
+  double radius = 0.0;                               // bounding sphere of the scaled box, m
+};
+
+Source load_source(const std::string& path) {
+  Source s;
+  s.path = fs::absolute(path).lexically_normal().string();
+  s.stem = fs::path(path).stem().string();
+  const sim::TriMesh mesh = sim::import_surface(path);
+  const sim::Aabb box = sim::bounding_box(mesh);
+  const double size = box.extent().maxCoeff();
+  if (!(size > 0)) throw bad_input(path + ": the mesh is flat or empty");
+  s.scale = (size >= kMinSize && size <= kMaxSize) ? 1.0 : kTargetSize / size;
+  s.center = box.center();
+  s.bottom = box.min.y();
+  s.radius = 0.5 * s.scale * box.extent().norm();
+  return s;
+}
+
+nlohmann::json material_json(const std::string& preset) {
+  // Young's modulus (Pa), Poisson ratio, density (kg/m^3), damping ratio.
+  if (preset == "rubber") return {{"youngs_modulus", 1e6}, {"poisson_ratio", 0.45}, {"density", 1100}, {"damping", 0.02}};
+  if (preset == "jelly") return {{"youngs_modulus", 2e4}, {"poisson_ratio", 0.45}, {"density", 1000}, {"damping", 0.05}};
+  if (preset == "stiff") return {{"youngs_modulus", 1e7}, {"poisson_ratio", 0.35}, {"density", 1200}, {"damping", 0.01}};
+  return {{"youngs_modulus", 1e5}, {"poisson_ratio", 0.4}, {"density", 1000}, {"damping", 0.03}};  // soft
+}
+
+nlohmann::json vec(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
+// Uniform in [lo, hi) from the raw 64-bit stream (the standard distributions
+// differ between library versions; the bits do not).
+double uniform(std::mt19937_64& rng, double lo, double hi) {
+  return lo + (hi - lo) * static_cast<double>(rng() >> 11) * 0x1.0p-53;
+}
+
+}  // namespace
+
+nlohmann::json build_drop_scene(const DropSettings& settings) {
+  if (settings.meshes.empty()) throw bad_input("drop: give at least one mesh");
+  std::vector<Source> sources;
+  for (const std::string& path : settings.meshes) sources.push_back(load_source(path));
+  const bool pile = settings.count > 1;
+  const int bodies = pile ? settings.count : static_cast<int>(sources.size());
+  const bool many = bodies > 2;
+  double cell = 0.0;
+  for (const Source& s : sources) cell = std::max(cell, 2.0 * s.radius * 1.1);
+
+  nlohmann::json list = nlohmann::json::array();
+  list.push_back({{"name", "ground"}, {"type", "plane"}, {"point", {0, 0, 0}}, {"normal", {0, 1, 0}},
+                  {"friction", settings.friction}});
+  std::mt19937_64 rng(settings.seed);
+  // Piles stack layers of 2 x 2 cells; side by side is one row along x.
+  const int per_layer = pile ? std::min(4, bodies) : bodies;
+  const int columns = pile ? (per_layer > 1 ? 2 : 1) : bodies;
+  for (int i = 0; i < bodies; ++i) {
+    const Source& s = sources[static_cast<size_t>(i) % sources.size()];
+    const int layer = i / per_layer, slot = i % per_layer;
+    const int row = slot / columns, column = slot % columns;
+    const int rows = (per_layer + columns - 1) / columns;
+    Eigen::Vector3d rotation = Eigen::Vector3d::Zero();
+    Eigen::Vector3d center((column - 0.5 * (columns - 1)) * cell, 0.0, (row - 0.5 * (rows - 1)) * cell);
+    if (pile) {
+      rotation = Eigen::Vector3d(uniform(rng, -20, 20), uniform(rng, 0, 360), uniform(rng, -20, 20));
+      center.x() += uniform(rng, -0.1, 0.1) * cell;
+      center.z() += uniform(rng, -0.1, 0.1) * cell;
+      center.y() = settings.height + s.radius + layer * cell;
+    }
+    sim::Transform t;
+    t.rotation = rotation;
+    t.scale = Eigen::Vector3d::Constant(s.scale);
+    const Eigen::Matrix3d R = t.rotation_matrix();
+    Eigen::Vector3d position = center - R * (s.scale * s.center);
+    // Unrotated bodies rest their lowest point exactly `height` above the ground.
+    if (!pile) position.y() = settings.height - s.scale * s.bottom;
+    nlohmann::json body = {{"name", pile || sources.size() > 1 ? s.stem + "-" + std::to_string(i + 1) : s.stem},
+                           {"mesh", s.path},
+                           {"friction", settings.friction},
+                           {"transform", {{"position", vec(position)}, {"rotation", vec(rotation)}, {"scale", s.scale}}}};
+    if (settings.material == "rigid") {
+      body["type"] = "rigid";
+      body["density"] = 1000;
+    } else {
+      body["type"] = "deformable";
+      body["material"] = material_json(settings.material);
+      body["tets"] = {{"resolution", many ? 6 : 8}};
+    }
+    list.push_back(body);
+  }
+  std::string name = fs::path(settings.meshes.front()).stem().string() + (pile ? "-pile" : "-drop");
+  return {{"recoil", 1},
+          {"name", name},
+          {"description", "built by recoil drop"},
+          {"simulation", {{"dt", 0.004}, {"duration", settings.seconds}}},
+          {"bodies", list},
+          {"render", {{"camera", {{"mode", "fixed"}, {"azimuth", 30}, {"elevation", 20}}}}}};
+}
+
+}  // namespace recoil::cli

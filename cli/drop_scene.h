@@ -1,0 +1,26 @@
+#pragma once
+// The scene `recoil drop` builds: a ground plane and the meshes above it,
+// sized sensibly, one each side by side or `count` copies in a loose pile
+// (seeded, so reruns match). It is built as a scene file document so that
+// --save-scene writes exactly what runs, and `run` can rerun it.
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+namespace recoil::cli {
+
+struct DropSettings {
+  std::vector<std::string> meshes;
+  std::string material = "soft";  // soft | rubber | jelly | stiff | rigid
+  double height = 0.3;            // m: gap between the ground and the lowest body
+  double friction = 0.5;
+  int count = 1;                  // copies in the pile (cycling through the meshes); 1: one of each
+  double seconds = 3.0;           // simulated
+  unsigned seed = 1;              // of the pile's jitter and orientations
+};
+
+// A scene file document (SPEC.md section 3) with absolute mesh paths. Throws
+// bad_input naming the mesh for unreadable or empty meshes.
+nlohmann::json build_drop_scene(const DropSettings& settings);
+
+}  // namespace recoil::cli

@@ -1,0 +1,239 @@
+#include "cli/json_cursor.h"
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace recoil::cli {
+namespace {
+
+std::string escape_pointer_token(const std::string& key) {
+  std::string out;
+  for (char c : key) {
+    if (c == '~') out += "~0";
+    else if (c == '/') out += "~1";
+    else out += c;
+  }
+  return out;
+}
+
+std::string format_number(double x) {
+  std::ostringstream s;
+  s.precision(6);
+  s << x;
+  return s.str();
+}
+
+size_t edit_distance(std::string_view a, std::string_view b) {
+  std::vector<size_t> row(b.size() + 1);
+  for (size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (size_t i = 1; i <= a.size(); ++i) {
+    size_t diagonal = row[0];
+    row[0] = i;
+    for (size_t j = 1; j <= b.size(); ++j) {
+      const size_t up = row[j];
+      const bool same = std::tolower(static_cast<unsigned char>(a[i - 1])) ==
+                        std::tolower(static_cast<unsigned char>(b[j - 1]));
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (same ? 0 : 1)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
+nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
+  try {
+    return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::parse_error& e) {
+    // e.byte is 1-based and points just past the offending character.
+    const size_t end = std::min(text.size(), e.byte > 0 ? static_cast<size_t>(e.byte - 1) : size_t{0});
+    size_t line = 1, column = 1;
+    for (size_t i = 0; i < end; ++i) {
+      if (text[i] == '\n') {
+        ++line;
+        column = 1;
+      } else {
+        ++column;
+      }
+    }
+    std::string what = e.what();
+    // nlohmann prefixes "[json.exception.parse_error.101] parse error at line L, column C: "
+    const size_t colon = what.find(": ");
+    if (colon != std::string::npos) what = what.substr(colon + 2);
+    throw bad_input(file + ":" + std::to_string(line) + ":" + std::to_string(column) + ": syntax error: " + what);
+  }
+}
+
+std::string near_miss(std::string_view word, const std::vector<std::string>& candidates) {
+  std::string best;
+  size_t best_distance = std::max<size_t>(2, word.size() / 3) + 1;
+  for (const std::string& c : candidates) {
+    const size_t d = edit_distance(word, c);
+    if (d < best_distance) {
+      best_distance = d;
+      best = c;
+    }
+  }
+  return best;
+}
+
+std::string json_type_name(const nlohmann::json& value) {
+  switch (value.type()) {
+    case nlohmann::json::value_t::null: return "null";
+    case nlohmann::json::value_t::object: return "an object";
+    case nlohmann::json::value_t::array: return "an array";
+    case nlohmann::json::value_t::string: return "a string";
+    case nlohmann::json::value_t::boolean: return "a boolean";
+    case nlohmann::json::value_t::binary: return "binary data";
+    case nlohmann::json::value_t::discarded: return "nothing";
+    default: return "a number";
+  }
+}
+
+JsonCursor::JsonCursor(const nlohmann::json& in, nlohmann::json& out, std::string file, std::string pointer)
+    : m_in(&in), m_out(&out), m_file(std::move(file)), m_pointer(std::move(pointer)) {}
+
+void JsonCursor::fail(const std::string& message) const {
+  throw bad_input(m_file + ": " + (m_pointer.empty() ? "/" : m_pointer) + ": " + message);
+}
+
+void JsonCursor::type_error(const char* expected) const {
+  std::string got = json_type_name(*m_in);
+  if (m_in->is_string()) got += " \"" + m_in->get<std::string>() + "\"";
+  else if (m_in->is_number() || m_in->is_boolean()) got += " " + m_in->dump();
+  fail(std::string("expected ") + expected + ", got " + got);
+}
+
+void JsonCursor::expect_object(const std::vector<std::string>& allowed) const {
+  if (!m_in->is_object()) type_error("an object");
+  if (!m_out->is_object()) *m_out = nlohmann::json::object();
+  for (const auto& [key, value] : m_in->items()) {
+    if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
+    const std::string suggestion = near_miss(key, allowed);
+    std::string message = "unknown key \"" + key + "\"";
+    if (!suggestion.empty()) message += "; did you mean \"" + suggestion + "\"?";
+    else {
+      message += "; expected one of";
+      for (const std::string& a : allowed) message += " " + a;
+    }
+    JsonCursor(value, *m_out, m_file, m_pointer + "/" + escape_pointer_token(key)).fail(message);
+  }
+}
+
+JsonCursor JsonCursor::child(const std::string& key) const {
+  if (!m_in->is_object()) type_error("an object");
+  const std::string pointer = m_pointer + "/" + escape_pointer_token(key);
+  const auto it = m_in->find(key);
+  if (it == m_in->end()) JsonCursor(*m_in, *m_out, m_file, pointer).fail("is required");
+  if (!m_out->is_object()) *m_out = nlohmann::json::object();
+  return JsonCursor(*it, (*m_out)[key], m_file, pointer);
+}
+
+JsonCursor JsonCursor::child_or_empty(const std::string& key) const {
+  if (has(key)) return child(key);
+  static const nlohmann::json empty = nlohmann::json::object();
+  if (!m_out->is_object()) *m_out = nlohmann::json::object();
+  return JsonCursor(empty, (*m_out)[key], m_file, m_pointer + "/" + escape_pointer_token(key));
+}
+
+std::vector<JsonCursor> JsonCursor::elements(std::optional<size_t> size) const {
+  if (!m_in->is_array()) type_error("an array");
+  if (size && m_in->size() != *size)
+    fail("expected " + std::to_string(*size) + " elements, got " + std::to_string(m_in->size()));
+  // Sized up front: the children keep pointers into it.
+  *m_out = nlohmann::json::array();
+  for (size_t i = 0; i < m_in->size(); ++i) m_out->push_back(nullptr);
+  std::vector<JsonCursor> out;
+  for (size_t i = 0; i < m_in->size(); ++i)
+    out.emplace_back((*m_in)[i], (*m_out)[i], m_file, m_pointer + "/" + std::to_string(i));
+  return out;
+}
+
+double JsonCursor::number() const {
+  if (!m_in->is_number()) type_error("a number");
+  const double x = m_in->get<double>();
+  if (!std::isfinite(x)) fail("must be finite");
+  *m_out = *m_in;
+  return x;
+}
+
+int JsonCursor::integer() const {
+  if (!m_in->is_number_integer()) type_error("an integer");
+  const auto x = m_in->get<long long>();
+  if (x < -2147483647LL || x > 2147483647LL) fail("integer out of range: " + m_in->dump());
+  *m_out = *m_in;
+  return static_cast<int>(x);
+}
+
+bool JsonCursor::boolean() const {
+  if (!m_in->is_boolean()) type_error("true or false");
+  *m_out = *m_in;
+  return m_in->get<bool>();
+}
+
+std::string JsonCursor::string() const {
+  if (!m_in->is_string()) type_error("a string");
+  *m_out = *m_in;
+  return m_in->get<std::string>();
+}
+
+Eigen::Vector3d JsonCursor::vec3() const {
+  if (!m_in->is_array()) type_error("an array of 3 numbers");
+  if (m_in->size() != 3) fail("expected 3 numbers [x, y, z], got " + std::to_string(m_in->size()));
+  Eigen::Vector3d v;
+  const auto items = elements(3);
+  for (int k = 0; k < 3; ++k) v[k] = items[static_cast<size_t>(k)].number();
+  return v;
+}
+
+double JsonCursor::number_in(double lo, double hi, bool open_lo, bool open_hi) const {
+  const double x = number();
+  const bool below = open_lo ? !(x > lo) : !(x >= lo);
+  const bool above = open_hi ? !(x < hi) : !(x <= hi);
+  if (below || above) {
+    std::string range;
+    if (std::isinf(hi)) range = (open_lo ? "> " : ">= ") + format_number(lo);
+    else
+      range = std::string("in ") + (open_lo ? "(" : "[") + format_number(lo) + ", " + format_number(hi) +
+              (open_hi ? ")" : "]");
+    fail("must be " + range + ", got " + format_number(x));
+  }
+  return x;
+}
+
+double JsonCursor::number_or(const std::string& key, double fallback) const {
+  if (has(key)) return child(key).number();
+  (*m_out)[key] = fallback;
+  return fallback;
+}
+
+int JsonCursor::integer_or(const std::string& key, int fallback) const {
+  if (has(key)) return child(key).integer();
+  (*m_out)[key] = fallback;
+  return fallback;
+}
+
+bool JsonCursor::boolean_or(const std::string& key, bool fallback) const {
+  if (has(key)) return child(key).boolean();
+  (*m_out)[key] = fallback;
+  return fallback;
+}
+
+std::string JsonCursor::string_or(const std::string& key, const std::string& fallback) const {
+  if (has(key)) return child(key).string();
+  (*m_out)[key] = fallback;
+  return fallback;
+}
+
+Eigen::Vector3d JsonCursor::vec3_or(const std::string& key, const Eigen::Vector3d& fallback) const {
+  if (has(key)) return child(key).vec3();
+  (*m_out)[key] = {fallback.x(), fallback.y(), fallback.z()};
+  return fallback;
+}
+
+}  // namespace recoil::cli

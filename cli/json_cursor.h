@@ -1,0 +1,87 @@
+#pragma once
+// JsonCursor: one value inside a parsed JSON document together with its JSON
+// pointer, for validating scene files (pbrt style: every error names the file
+// and the field). While it reads, it also writes the value it used (defaults
+// included) into a parallel "resolved" document at the same pointer, which
+// becomes DIR/scene.json: the fully resolved scene.
+#include <Eigen/Core>
+#include <cmath>
+#include <initializer_list>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace recoil::cli {
+
+// Parses `text` (the contents of `file`); syntax errors throw bad_input as
+// "FILE:LINE:COLUMN: syntax error: ...".
+nlohmann::json parse_json_text(const std::string& text, const std::string& file);
+
+// The closest of `candidates` to `word` when it is a plausible typo, else "".
+std::string near_miss(std::string_view word, const std::vector<std::string>& candidates);
+
+class JsonCursor {
+ public:
+  // `out` receives what was read; it must outlive the cursor and every child.
+  JsonCursor(const nlohmann::json& in, nlohmann::json& out, std::string file, std::string pointer = "");
+
+  const nlohmann::json& value() const { return *m_in; }
+  const std::string& pointer() const { return m_pointer; }
+  const std::string& file() const { return m_file; }
+
+  // Throws bad_input "FILE: /POINTER: message".
+  [[noreturn]] void fail(const std::string& message) const;
+
+  // Requires an object whose keys are all in `allowed`; an unknown key fails
+  // with a near-miss suggestion ("did you mean ...?").
+  void expect_object(const std::vector<std::string>& allowed) const;
+  bool is_object() const { return m_in->is_object(); }
+  bool is_array() const { return m_in->is_array(); }
+  bool is_number() const { return m_in->is_number(); }
+  bool is_string() const { return m_in->is_string(); }
+  bool has(const std::string& key) const { return m_in->is_object() && m_in->contains(key); }
+
+  // The member `key` (which must exist; fails "is required" otherwise).
+  JsonCursor child(const std::string& key) const;
+  // The member `key`, or an empty object standing in for it when absent (so
+  // that its defaults are recorded in the resolved document).
+  JsonCursor child_or_empty(const std::string& key) const;
+  // An array's elements (fails unless an array, optionally of `size` elements).
+  std::vector<JsonCursor> elements(std::optional<size_t> size = std::nullopt) const;
+
+  // Leaves: type-checked, copied to the resolved document.
+  double number() const;
+  int integer() const;
+  bool boolean() const;
+  std::string string() const;
+  Eigen::Vector3d vec3() const;
+  // number() checked against [lo, hi] (closed unless told otherwise).
+  double number_in(double lo, double hi, bool open_lo = false, bool open_hi = false) const;
+  double positive() const { return number_in(0.0, INFINITY, true, false); }
+
+  // Optional members: the default is used and recorded when absent.
+  double number_or(const std::string& key, double fallback) const;
+  int integer_or(const std::string& key, int fallback) const;
+  bool boolean_or(const std::string& key, bool fallback) const;
+  std::string string_or(const std::string& key, const std::string& fallback) const;
+  Eigen::Vector3d vec3_or(const std::string& key, const Eigen::Vector3d& fallback) const;
+
+  // Records `value` in the resolved document in place of what was read
+  // (e.g. an absolute path for a relative one).
+  void resolve_as(nlohmann::json value) const { *m_out = std::move(value); }
+
+ private:
+  [[noreturn]] void type_error(const char* expected) const;
+
+  const nlohmann::json* m_in;
+  nlohmann::json* m_out;
+  std::string m_file;
+  std::string m_pointer;
+};
+
+// JSON's name for the type of `value` ("a string", "an array", ...), for messages.
+std::string json_type_name(const nlohmann::json& value);
+
+}  // namespace recoil::cli

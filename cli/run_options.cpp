@@ -1,0 +1,92 @@
+#include "cli/run_options.h"
+
+#include <iostream>
+#include <thread>
+
+#include "cli/frame_spec.h"
+#include "cli/output_dir.h"
+#include "cli/scene_runner.h"
+#include "core/error.h"
+
+namespace recoil::cli {
+namespace {
+
+bool given(const RunOptions& options, const char* name) {
+  return options.command && options.command->count(name) > 0;
+}
+
+void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
+  nlohmann::json& r = scene.resolved["render"];
+  if (given(o, "--resolution")) {
+    scene.render.resolution = o.render.resolution;
+    const render::RenderSettings s = to_render_settings(scene.render);  // validates
+    r["resolution"] = {s.width, s.height};
+  }
+  if (given(o, "--fps")) r["fps"] = scene.render.fps = o.render.fps;
+  if (given(o, "--msaa")) r["msaa"] = scene.render.msaa = o.render.msaa;
+  if (given(o, "--no-shadows")) {
+    scene.render.no_shadows = true;
+    r["shadows"] = false;
+  }
+  if (given(o, "--background")) r["background"] = scene.render.background = o.render.background;
+  if (given(o, "--wireframe")) r["wireframe"] = scene.render.wireframe = true;
+  if (given(o, "--png-level")) r["png_level"] = scene.render.png_level = o.render.png_level;
+  if (given(o, "--color")) {
+    parse_color(o.render.color, "--color");
+    scene.render.color = o.render.color;
+    for (size_t i = 0; i < scene.bodies.size(); ++i)
+      if (scene.bodies[i].type != SceneBodyType::plane) scene.resolved["bodies"][i]["color"] = o.render.color;
+  }
+  if (given(o, "--camera-distance")) r["camera"]["distance"] = scene.render.camera_distance = o.render.camera_distance;
+  to_render_settings(scene.render);  // validates the combination (fps, resolution)
+}
+
+}  // namespace
+
+void add_run_options(CLI::App& command, RunOptions& options) {
+  options.command = &command;
+  command.add_option("-o,--output", options.output, "Output folder (default: output/<scene name>/)");
+  command.add_option("--frames", options.frames, "Frames to write: 1-100, 1-100:5, 1,3,7-9 (default: all)");
+  command.add_option("--solver", options.solver, "Contact solver (default: the scene's)")
+      ->check(CLI::IsMember({"cr", "pgs", "cr-plain"}));
+  command.add_flag("--no-render", options.no_render, "Simulate and write statistics only, no frames");
+  command.add_option("--stats", options.stats, "Write the per-frame statistics here (default: DIR/stats.jsonl)");
+  command.add_option("--video", options.video, "Also encode the frames to this video (needs ffmpeg)");
+  command.add_flag("--resume", options.resume, "Skip frames already on disk (the simulation still runs)");
+  command.add_option("--threads", options.threads, "Threads for collision queries (default: all cores)")
+      ->check(CLI::Range(1, 1024));
+  add_render_options(command, options.render);
+}
+
+int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions& global, const std::string& command_line) {
+  RunJob job;
+  if (!options.solver.empty()) {
+    scene.world.contact.solver.method = options.solver == "pgs"        ? sim::SolverMethod::pgs
+                                        : options.solver == "cr-plain" ? sim::SolverMethod::cr_plain
+                                                                       : sim::SolverMethod::cr;
+    scene.resolved["simulation"]["solver"]["method"] = options.solver;
+  }
+  const unsigned cores = std::thread::hardware_concurrency();
+  scene.world.contact.num_threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, cores));
+  apply_render_overrides(options, scene);
+  if (!options.frames.empty()) job.frames = parse_frame_spec(options.frames);
+  job.output_dir = options.output.empty() ? default_output_dir(scene.name) : std::filesystem::path(options.output);
+  job.stats_path = options.stats;
+  job.video = options.video;
+  job.render = !options.no_render;
+  job.resume = options.resume;
+  job.command = command_line;
+  job.scene = std::move(scene);
+  const RunResult result = run_scene(job, global);
+  if (!global.quiet) {
+    std::cerr << "recoil: " << job.scene.name << ": " << result.steps << " steps";
+    if (job.render) {
+      std::cerr << ", wrote " << result.frames_written << " frames";
+      if (result.frames_skipped > 0) std::cerr << " (" << result.frames_skipped << " already on disk)";
+    }
+    std::cerr << " to " << job.output_dir.string() << "\n";
+  }
+  return 0;
+}
+
+}  // namespace recoil::cli

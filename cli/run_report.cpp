@@ -1,0 +1,78 @@
+#include "cli/run_report.h"
+
+#include <algorithm>
+
+#include "cli/scene_runner.h"
+
+namespace recoil::cli {
+
+RunReport::RunReport(const RunJob& job, const SceneDesc& scene) {
+#ifdef NDEBUG
+  const char* build_type = "release";
+#else
+  const char* build_type = "debug";
+#endif
+  m_head = {{"version", RECOIL_VERSION},
+            {"build", {{"git", RECOIL_GIT}, {"type", build_type}, {"compiler", __VERSION__}}},
+            {"command", job.command},
+            {"scene", scene.name},
+            {"scene_file", scene.file.string()},
+            {"output", job.output_dir.string()},
+            {"solver", solver_name(scene.world.contact.solver.method)},
+            {"threads", scene.world.contact.num_threads},
+            {"dt", scene.world.dt},
+            {"fps", scene.render.fps},
+            {"render", job.render},
+            {"resume", job.resume}};
+}
+
+void RunReport::add_step(const sim::StepReport& r) {
+  timings.step += r.profile.total;
+  timings.assemble += r.profile.assemble;
+  timings.collision += r.profile.collide;
+  timings.solve += r.profile.solve;
+  timings.integrate += r.profile.integrate;
+  timings.health += r.profile.health;
+  m_iterations += r.solver_iterations;
+  m_restarts += r.solver_restarts;
+  m_contacts += r.contacts;
+  if (!r.solver_converged) ++m_not_converged;
+  m_max_residual = std::max(m_max_residual, r.solver_residual);
+  m_max_penetration = std::max(m_max_penetration, r.max_penetration);
+}
+
+void RunReport::add_frame(const FrameTimes& times) { timings.render += times.render; }
+
+void RunReport::finish(const sim::World& world, const RunResult& result, double total_ms) {
+  timings.total = total_ms;
+  const sim::WorldCounters& c = world.counters();
+  m_tail = {{"frames", {{"written", result.frames_written}, {"skipped", result.frames_skipped}}},
+            {"steps", result.steps},
+            {"simulated_seconds", world.time()},
+            {"counters",
+             {{"steps", c.steps},
+              {"solver_not_converged", c.solver_not_converged},
+              {"inverted_steps", c.inverted_steps},
+              {"nan_steps", c.nan_steps},
+              {"energy_blowup_steps", c.energy_blowup_steps}}},
+            {"exit", {{"code", result.failed ? 3 : 0}, {"status", result.failed ? "sim_failed" : "ok"},
+                      {"message", result.message}}}};
+}
+
+nlohmann::json RunReport::json() const {
+  nlohmann::json out = m_head;
+  out.update(m_tail);
+  out["timings_ms"] = {{"build", timings.build},         {"step", timings.step},   {"assemble", timings.assemble},
+                       {"collision", timings.collision}, {"solve", timings.solve}, {"integrate", timings.integrate},
+                       {"health", timings.health},       {"render", timings.render}, {"encode", timings.encode},
+                       {"total", timings.total}};
+  out["solver_totals"] = {{"iterations", m_iterations},
+                          {"restarts", m_restarts},
+                          {"contacts", m_contacts},
+                          {"not_converged_steps", m_not_converged},
+                          {"max_residual", m_max_residual},
+                          {"max_penetration", m_max_penetration}};
+  return out;
+}
+
+}  // namespace recoil::cli

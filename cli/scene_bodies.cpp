@@ -1,0 +1,316 @@
+#include "cli/scene_bodies.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+#include "core/error.h"
+#include "sim/geometry/boundary.h"
+#include "sim/geometry/mesh_import.h"
+#include "sim/geometry/primitives.h"
+#include "sim/geometry/tet_file.h"
+
+namespace recoil::cli {
+namespace fs = std::filesystem;
+namespace {
+
+const std::vector<std::string> kAllBodyKeys = {
+    "name",     "type",     "mesh",     "primitive", "tets",     "material", "density", "friction", "transform",
+    "velocity", "angular_velocity", "motion", "pinned", "color", "opacity", "point",   "normal",   "self_contact"};
+
+std::vector<std::string> keys_for(SceneBodyType type) {
+  std::vector<std::string> keys = {"name", "type"};
+  auto add = [&](std::initializer_list<const char*> more) { keys.insert(keys.end(), more.begin(), more.end()); };
+  switch (type) {
+    case SceneBodyType::plane: add({"point", "normal", "friction"}); break;
+    case SceneBodyType::fixed: add({"mesh", "primitive", "friction", "transform", "color", "opacity"}); break;
+    case SceneBodyType::kinematic:
+      add({"mesh", "primitive", "friction", "transform", "color", "opacity", "motion"});
+      break;
+    case SceneBodyType::rigid:
+      add({"mesh", "primitive", "friction", "transform", "color", "opacity", "density", "velocity",
+           "angular_velocity"});
+      break;
+    case SceneBodyType::deformable:
+      add({"mesh", "primitive", "friction", "transform", "color", "opacity", "tets", "material", "velocity",
+           "pinned", "self_contact"});
+      break;
+  }
+  return keys;
+}
+
+SceneBodyType parse_type(const JsonCursor& c) {
+  const std::string t = c.string();
+  if (t == "plane") return SceneBodyType::plane;
+  if (t == "static") return SceneBodyType::fixed;
+  if (t == "kinematic") return SceneBodyType::kinematic;
+  if (t == "rigid") return SceneBodyType::rigid;
+  if (t == "deformable") return SceneBodyType::deformable;
+  const std::string guess = near_miss(t, {"plane", "static", "kinematic", "rigid", "deformable"});
+  c.fail("unknown body type \"" + t + "\"" + (guess.empty() ? "" : "; did you mean \"" + guess + "\"?") +
+         " (plane, static, kinematic, rigid or deformable)");
+}
+
+sim::FrictionDesc parse_friction(const JsonCursor& c) {
+  sim::FrictionDesc f;
+  if (c.is_number()) {
+    f.static_coefficient = f.kinetic_coefficient = c.number_in(0.0, 10.0);
+    return f;
+  }
+  c.expect_object({"static", "kinetic"});
+  f.static_coefficient = c.child("static").number_in(0.0, 10.0);
+  const JsonCursor kinetic = c.child("kinetic");
+  f.kinetic_coefficient = kinetic.number_in(0.0, 10.0);
+  if (f.kinetic_coefficient > f.static_coefficient)
+    kinetic.fail("must be <= the static coefficient " + c.child("static").value().dump());
+  return f;
+}
+
+sim::Transform parse_transform(const JsonCursor& c) {
+  c.expect_object({"position", "rotation", "scale"});
+  sim::Transform t;
+  t.position = c.vec3_or("position", Eigen::Vector3d::Zero());
+  t.rotation = c.vec3_or("rotation", Eigen::Vector3d::Zero());
+  if (c.has("scale")) {
+    const JsonCursor s = c.child("scale");
+    if (s.is_number()) {
+      t.scale = Eigen::Vector3d::Constant(s.number_in(0.0, INFINITY, true));
+    } else {
+      t.scale = s.vec3();
+      for (int k = 0; k < 3; ++k)
+        if (!(t.scale[k] != 0.0)) s.fail("scale components must be non-zero");
+    }
+  } else {
+    c.number_or("scale", 1.0);
+  }
+  return t;
+}
+
+sim::TriMesh parse_primitive(const JsonCursor& c) {
+  c.expect_object({"box", "sphere", "cylinder", "capsule", "torus"});
+  if (c.value().size() != 1) c.fail("expected exactly one of box, sphere, cylinder, capsule, torus");
+  if (c.has("box")) {
+    const JsonCursor box = c.child("box");
+    const Eigen::Vector3d size = box.vec3();
+    if (!(size.minCoeff() > 0.0)) box.fail("edge lengths must be > 0");
+    return sim::make_box(size);
+  }
+  if (c.has("sphere")) return sim::make_sphere(c.child("sphere").positive());
+  auto radius_height = [&](const char* key, double& r, double& h) {
+    const JsonCursor p = c.child(key);
+    p.expect_object({"radius", "height"});
+    r = p.child("radius").positive();
+    h = p.child("height").number_in(0.0, INFINITY, std::string(key) == "cylinder");
+  };
+  double r = 0, h = 0;
+  if (c.has("cylinder")) {
+    radius_height("cylinder", r, h);
+    return sim::make_cylinder(r, h);
+  }
+  if (c.has("capsule")) {
+    radius_height("capsule", r, h);
+    return sim::make_capsule(r, h);
+  }
+  const JsonCursor torus = c.child("torus");
+  torus.expect_object({"major", "minor"});
+  const double major = torus.child("major").positive();
+  const JsonCursor minor_c = torus.child("minor");
+  const double minor = minor_c.positive();
+  if (!(minor < major)) minor_c.fail("must be < major (" + torus.child("major").value().dump() + ")");
+  return sim::make_torus(major, minor);
+}
+
+bool is_tet_file(const fs::path& path) {
+  const std::string ext = path.extension().string();
+  return ext == ".msh" || ext == ".node" || ext == ".ele";
+}
+
+// A file named by the scene: resolved against its folder, recorded absolute.
+fs::path resolve_file(const JsonCursor& c, const fs::path& base_dir) {
+  const std::string text = c.string();
+  if (text.empty()) c.fail("empty file name");
+  const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (base_dir / text).lexically_normal();
+  std::error_code ec;
+  if (!fs::is_regular_file(path, ec)) c.fail("file not found: " + path.string());
+  c.resolve_as(fs::absolute(path).lexically_normal().string());
+  return path;
+}
+
+// Loads a geometry file, turning the reader's error into one that names the field.
+template <typename F>
+auto load_geometry(const JsonCursor& c, F&& read) {
+  try {
+    return read();
+  } catch (const Error& e) {
+    c.fail(e.what());
+  }
+}
+
+struct Geometry {
+  sim::TriMesh surface;
+  sim::TetMesh tets;  // when the mesh file is tetrahedral
+};
+
+Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir) {
+  const bool mesh = body.has("mesh"), primitive = body.has("primitive");
+  if (mesh == primitive) body.fail(mesh ? "give either \"mesh\" or \"primitive\", not both" : "needs a \"mesh\" or a \"primitive\"");
+  Geometry g;
+  if (primitive) {
+    g.surface = parse_primitive(body.child("primitive"));
+    return g;
+  }
+  const JsonCursor c = body.child("mesh");
+  const fs::path path = resolve_file(c, base_dir);
+  if (is_tet_file(path)) {
+    g.tets = load_geometry(c, [&] { return sim::read_tet_file(path); });
+    if (g.tets.empty()) c.fail("holds no tetrahedra: " + path.string());
+    g.surface = sim::boundary_surface(g.tets);
+  } else {
+    g.surface = load_geometry(c, [&] { return sim::import_surface(path); });
+  }
+  if (g.surface.empty()) c.fail("holds no triangles: " + path.string());
+  return g;
+}
+
+void parse_material(const JsonCursor& c, double length, sim::Material& m) {
+  c.expect_object({"model", "youngs_modulus", "poisson_ratio", "density", "damping"});
+  const std::string model = c.string_or("model", "corotated");
+  if (model == "corotated") m.model = sim::MaterialModel::corotated;
+  else if (model == "neohookean") m.model = sim::MaterialModel::neo_hookean;
+  else c.child("model").fail("unknown material model \"" + model + "\" (corotated or neohookean)");
+  auto field = [&](const char* key, double fallback, double lo, double hi, bool open_lo, bool open_hi) {
+    if (!c.has(key)) return c.number_or(key, fallback);
+    return c.child(key).number_in(lo, hi, open_lo, open_hi);
+  };
+  m.youngs_modulus = field("youngs_modulus", 1e5, 0.0, INFINITY, true, false);
+  m.poisson_ratio = field("poisson_ratio", 0.3, 0.0, 0.5, false, true);
+  m.density = field("density", 1000.0, 0.0, INFINITY, true, false);
+  const double damping = field("damping", 0.0, 0.0, 10.0, false, false);
+  rayleigh_from_damping(damping, m.youngs_modulus, m.density, length, m.damping_alpha, m.damping_beta);
+}
+
+render::Rgb parse_body_color(const JsonCursor& c) {
+  return parse_color(c.string(), c.file() + ": " + c.pointer());
+}
+
+}  // namespace
+
+void rayleigh_from_damping(double zeta, double youngs_modulus, double density, double length, double& alpha,
+                           double& beta) {
+  const double omega0 = std::numbers::pi / std::max(length, 1e-6) * std::sqrt(youngs_modulus / density);
+  alpha = zeta * omega0;
+  beta = zeta / omega0;
+}
+
+void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, SceneDesc& scene) {
+  body.expect_object(kAllBodyKeys);
+  const SceneBodyType type = parse_type(body.child("type"));
+  const std::vector<std::string> allowed = keys_for(type);
+  for (const auto& [key, value] : body.value().items())
+    if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
+      body.child(key).fail("not allowed for a " + std::string(to_string(type)) + " body");
+
+  SceneBody out;
+  out.type = type;
+  out.pointer = body.pointer();
+  out.name = body.string_or("name", std::string(to_string(type)) + std::to_string(index));
+  if (out.name.empty()) body.child("name").fail("must not be empty");
+  if (scene.find(out.name)) body.child("name").fail("duplicate body name \"" + out.name + "\"");
+  const sim::FrictionDesc friction = body.has("friction") ? parse_friction(body.child("friction")) : sim::FrictionDesc{};
+  if (!body.has("friction")) body.number_or("friction", friction.static_coefficient);  // records the default
+
+  if (type == SceneBodyType::plane) {
+    sim::PlaneDesc plane;
+    plane.name = out.name;
+    plane.point = body.vec3_or("point", Eigen::Vector3d::Zero());
+    plane.normal = body.vec3_or("normal", Eigen::Vector3d::UnitY());
+    if (!(plane.normal.norm() > 1e-12)) body.child("normal").fail("must not be zero");
+    plane.friction = friction;
+    out.index = static_cast<int>(scene.world.planes.size());
+    scene.world.planes.push_back(plane);
+    scene.bodies.push_back(out);
+    return;
+  }
+
+  const int mesh_bodies = static_cast<int>(std::count_if(scene.bodies.begin(), scene.bodies.end(),
+                                                         [](const SceneBody& b) { return b.type != SceneBodyType::plane; }));
+  out.color = body.has("color") ? parse_body_color(body.child("color")) : palette_color(mesh_bodies);
+  if (!body.has("color")) {
+    char hex[8];
+    std::snprintf(hex, sizeof(hex), "#%02x%02x%02x", static_cast<int>(std::lround(out.color[0] * 255)),
+                  static_cast<int>(std::lround(out.color[1] * 255)), static_cast<int>(std::lround(out.color[2] * 255)));
+    body.string_or("color", hex);
+  }
+  out.opacity = static_cast<float>(body.has("opacity") ? body.child("opacity").number_in(0.0, 1.0)
+                                                       : body.number_or("opacity", 1.0));
+  Geometry geometry = parse_geometry(body, base_dir);
+  const sim::Transform transform = parse_transform(body.child_or_empty("transform"));
+
+  if (type == SceneBodyType::deformable) {
+    sim::DeformableBodyDesc d;
+    d.name = out.name;
+    d.transform = transform;
+    d.static_friction = friction.static_coefficient;
+    d.kinetic_friction = friction.kinetic_coefficient;
+    const sim::Aabb box = sim::bounding_box(geometry.surface);
+    const double length = (box.extent().cwiseProduct(transform.scale.cwiseAbs())).maxCoeff();
+    parse_material(body.child_or_empty("material"), length, d.material);
+    d.velocity = body.vec3_or("velocity", Eigen::Vector3d::Zero());
+    d.self_contact = body.boolean_or("self_contact", true);
+    // A tetrahedral mesh file gives the tets; its boundary is the surface.
+    d.tets = std::move(geometry.tets);
+    d.mesh = std::move(geometry.surface);
+    if (body.has("tets")) {
+      const JsonCursor tets = body.child("tets");
+      tets.expect_object({"resolution", "file"});
+      if (!d.tets.empty()) tets.fail("the mesh file is already tetrahedral; remove \"tets\"");
+      if (tets.has("resolution") == tets.has("file")) tets.fail("give either \"resolution\" or \"file\"");
+      if (tets.has("resolution")) {
+        const JsonCursor r = tets.child("resolution");
+        d.resolution = r.integer();
+        if (d.resolution < 1 || d.resolution > 256) r.fail("must be in [1, 256], got " + std::to_string(d.resolution));
+      } else {
+        const JsonCursor f = tets.child("file");
+        const fs::path path = resolve_file(f, base_dir);
+        if (!is_tet_file(path)) f.fail("expected a tetrahedral mesh (.msh, .node or .ele), got " + path.string());
+        d.tets = load_geometry(f, [&] { return sim::read_tet_file(path); });
+        if (d.tets.empty()) f.fail("holds no tetrahedra: " + path.string());
+      }
+    } else if (d.tets.empty()) {
+      body.child_or_empty("tets").integer_or("resolution", d.resolution);
+    }
+    if (body.has("pinned")) {
+      const JsonCursor p = body.child("pinned");
+      p.expect_object({"min", "max"});
+      sim::PinBox pin{p.child("min").vec3(), p.child("max").vec3()};
+      if (!(pin.min.array() <= pin.max.array()).all()) p.fail("min must be <= max in every coordinate");
+      d.pinned = pin;
+    }
+    out.index = static_cast<int>(scene.world.bodies.size());
+    scene.world.bodies.push_back(std::move(d));
+  } else {
+    sim::RigidBodyDesc r;
+    r.name = out.name;
+    r.motion = type == SceneBodyType::rigid       ? sim::RigidMotion::dynamic
+               : type == SceneBodyType::kinematic ? sim::RigidMotion::kinematic
+                                                  : sim::RigidMotion::fixed;
+    r.mesh = std::move(geometry.surface);
+    r.transform = transform;
+    r.friction = friction;
+    if (type == SceneBodyType::rigid) {
+      r.density = body.has("density") ? body.child("density").positive() : body.number_or("density", 1000.0);
+      r.velocity = body.vec3_or("velocity", Eigen::Vector3d::Zero());
+      r.angular_velocity = body.vec3_or("angular_velocity", Eigen::Vector3d::Zero());
+    } else if (type == SceneBodyType::kinematic) {
+      const JsonCursor m = body.child_or_empty("motion");
+      m.expect_object({"velocity", "angular_velocity"});
+      r.velocity = m.vec3_or("velocity", Eigen::Vector3d::Zero());
+      r.angular_velocity = m.vec3_or("angular_velocity", Eigen::Vector3d::Zero());
+    }
+    out.index = static_cast<int>(scene.world.rigid_bodies.size());
+    scene.world.rigid_bodies.push_back(std::move(r));
+  }
+  scene.bodies.push_back(out);
+}
+
+}  // namespace recoil::cli

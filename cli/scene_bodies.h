@@ -1,0 +1,23 @@
+#pragma once
+// The `bodies` array of a scene file: geometry (mesh files, tet files,
+// primitives), materials, friction, transforms and motion, into the WorldDesc.
+#include <filesystem>
+
+#include "cli/json_cursor.h"
+#include "cli/scene_desc.h"
+
+namespace recoil::cli {
+
+// Parses body `index` (cursor at /bodies/index) and appends it to `scene`
+// (scene.bodies and the matching WorldDesc list). Names must be unique.
+void parse_body(const JsonCursor& body, int index, const std::filesystem::path& base_dir, SceneDesc& scene);
+
+// SPEC's single `damping` (a damping ratio zeta) as Rayleigh coefficients
+// D = alpha M + beta K, split evenly between the two terms at the body's
+// fundamental frequency estimate omega0 = (pi / L) sqrt(E / rho) (a free bar
+// of length L, the body's longest side): alpha = zeta omega0 (1/s),
+// beta = zeta / omega0 (s), so the damping ratio at omega0 is exactly zeta.
+void rayleigh_from_damping(double zeta, double youngs_modulus, double density, double length, double& alpha,
+                           double& beta);
+
+}  // namespace recoil::cli

@@ -1,0 +1,67 @@
+#pragma once
+// SceneDesc: a scene file (SPEC.md section 3) as plain data, parsed apart from
+// running it (pbrt style): the physics as a sim::WorldDesc, the look as
+// render options and a camera, and the bodies in scene order with the colour
+// and opacity they are drawn with.
+#include <Eigen/Core>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+#include <string>
+#include <vector>
+
+#include "cli/render_options.h"
+#include "render/render_scene.h"
+#include "sim/world_desc.h"
+
+namespace recoil::cli {
+
+// SPEC body types; `fixed` is the file's "static".
+enum class SceneBodyType { plane, fixed, kinematic, rigid, deformable };
+const char* to_string(SceneBodyType type);
+// "cr", "cr-plain" or "pgs", as the scene file and --solver spell them.
+const char* solver_name(sim::SolverMethod method);
+
+struct SceneBody {
+  std::string name;           // unique in the scene
+  SceneBodyType type = SceneBodyType::deformable;
+  int index = 0;              // into world.planes, world.rigid_bodies or world.bodies (by type)
+  render::Rgb color{};        // sRGB
+  float opacity = 1.0f;
+  std::string pointer;        // "/bodies/3", for messages
+};
+
+enum class CameraMode { fixed, orbit, follow };
+
+// A camera with `has_position` false is fitted to the scene at frame 1, seen
+// from `azimuth`/`elevation`; `distance` 0 means "fit".
+struct CameraDesc {
+  CameraMode mode = CameraMode::fixed;
+  bool has_position = false;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m
+  bool has_target = false;
+  Eigen::Vector3d target = Eigen::Vector3d::Zero();    // m
+  double fov = 40.0;         // vertical, degrees
+  double azimuth = 30.0;     // degrees about +y from +z
+  double elevation = 20.0;   // degrees above the horizon
+  double distance = 0.0;     // m from the target; 0: fit
+  double turns = 1.0;        // orbit
+  std::string body;          // follow: the body kept in view
+};
+
+struct SceneDesc {
+  std::string name;
+  std::filesystem::path file;   // where it was read from (empty when built in memory)
+  sim::WorldDesc world;
+  double duration = 3.0;        // s of simulated time; frames cover [0, duration]
+  std::vector<SceneBody> bodies;  // scene order, planes included
+  RenderOptions render;         // resolution, fps, msaa, shadows, background, ...
+  bool grid = true;             // grid lines on the ground
+  CameraDesc camera;
+  nlohmann::json resolved;      // the scene with every default filled in and absolute paths
+
+  // Frames in [0, duration] at render.fps: frame k shows time (k - 1) / fps.
+  int frame_count() const;
+  const SceneBody* find(const std::string& body_name) const;
+};
+
+}  // namespace recoil::cli

@@ -1,0 +1,76 @@
+#include "cli/scene_info.h"
+
+#include <iomanip>
+#include <iostream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli/scene_parser.h"
+#include "cli/scene_runner.h"
+#include "core/error.h"
+#include "sim/world.h"
+
+namespace recoil::cli {
+
+int print_scene_info(const std::filesystem::path& file, bool as_json) {
+  const SceneDesc scene = load_scene(file);
+  std::unique_ptr<sim::World> world;
+  try {
+    world = std::make_unique<sim::World>(scene.world);
+  } catch (const Error& e) {
+    throw scene_error(e, scene);
+  }
+  nlohmann::json bodies = nlohmann::json::array();
+  for (const SceneBody& b : scene.bodies) {
+    nlohmann::json row = {{"name", b.name}, {"type", to_string(b.type)}};
+    if (b.type == SceneBodyType::plane) {
+      const sim::PlaneDesc& p = scene.world.planes[static_cast<size_t>(b.index)];
+      row["point"] = {p.point.x(), p.point.y(), p.point.z()};
+      row["normal"] = {p.normal.x(), p.normal.y(), p.normal.z()};
+    } else if (b.type == SceneBodyType::deformable) {
+      // World bodies are in deformable-description order.
+      const sim::DeformableBody& body = world->body(b.index);
+      row["surface_vertices"] = body.surface.num_vertices();
+      row["surface_triangles"] = body.surface.num_triangles();
+      row["nodes"] = body.num_nodes;
+      row["tets"] = body.rest.num_tets();
+      row["mass"] = body.mass.sum();
+      row["volume"] = body.surface_volume;
+    } else {
+      const sim::RigidBodyDesc& r = scene.world.rigid_bodies[static_cast<size_t>(b.index)];
+      row["surface_vertices"] = r.mesh.num_vertices();
+      row["surface_triangles"] = r.mesh.num_triangles();
+    }
+    bodies.push_back(row);
+  }
+  const long steps = std::lround(scene.duration / scene.world.dt);
+  if (as_json) {
+    const nlohmann::json out = {{"file", file.string()},        {"name", scene.name},
+                                {"dt", scene.world.dt},         {"duration", scene.duration},
+                                {"steps", steps},               {"fps", scene.render.fps},
+                                {"frames", scene.frame_count()}, {"solver", solver_name(scene.world.contact.solver.method)},
+                                {"bodies", bodies}};
+    std::cout << out.dump(2) << "\n";
+    return 0;
+  }
+  std::ostringstream text;
+  text << std::setprecision(6);
+  text << file.string() << ": scene \"" << scene.name << "\"\n"
+       << "  simulation   " << scene.duration << " s in " << steps << " steps of " << scene.world.dt
+       << " s, solver " << solver_name(scene.world.contact.solver.method) << "\n"
+       << "  frames       " << scene.frame_count() << " at " << scene.render.fps << " fps, " << scene.render.resolution
+       << "\n"
+       << "  bodies       " << scene.bodies.size() << "\n";
+  for (const nlohmann::json& row : bodies) {
+    text << "    " << std::left << std::setw(16) << row["name"].get<std::string>() << std::setw(11)
+         << row["type"].get<std::string>();
+    if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
+    if (row.contains("tets"))
+      text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes, mass " << row["mass"].get<double>() << " kg";
+    text << "\n";
+  }
+  std::cout << text.str();
+  return 0;
+}
+
+}  // namespace recoil::cli

@@ -1,0 +1,188 @@
+#include "cli/scene_parser.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "cli/json_cursor.h"
+#include "cli/scene_bodies.h"
+#include "core/error.h"
+
+namespace recoil::cli {
+namespace fs = std::filesystem;
+namespace {
+
+void parse_simulation(const JsonCursor& c, SceneDesc& scene) {
+  c.expect_object({"dt", "duration", "gravity", "solver", "contact"});
+  sim::WorldDesc& w = scene.world;
+  w.dt = c.has("dt") ? c.child("dt").number_in(0.0, 1.0, true) : c.number_or("dt", w.dt);
+  scene.duration = c.has("duration") ? c.child("duration").number_in(0.0, 1e6) : c.number_or("duration", 3.0);
+  w.gravity = c.vec3_or("gravity", w.gravity);
+
+  const JsonCursor solver = c.child_or_empty("solver");
+  solver.expect_object({"method", "tolerance", "max_iterations"});
+  const std::string method = solver.string_or("method", "cr");
+  if (method == "cr") w.contact.solver.method = sim::SolverMethod::cr;
+  else if (method == "cr-plain") w.contact.solver.method = sim::SolverMethod::cr_plain;
+  else if (method == "pgs") w.contact.solver.method = sim::SolverMethod::pgs;
+  else solver.child("method").fail("unknown solver \"" + method + "\" (cr, pgs or cr-plain)");
+  w.contact.solver.tolerance = solver.has("tolerance") ? solver.child("tolerance").number_in(0.0, 1.0, true)
+                                                       : solver.number_or("tolerance", w.contact.solver.tolerance);
+  if (solver.has("max_iterations")) {
+    const JsonCursor m = solver.child("max_iterations");
+    w.contact.solver.max_iterations = m.integer();
+    if (w.contact.solver.max_iterations < 1) m.fail("must be >= 1");
+  } else {
+    solver.integer_or("max_iterations", w.contact.solver.max_iterations);
+  }
+
+  const JsonCursor contact = c.child_or_empty("contact");
+  contact.expect_object({"margin"});
+  w.contact.margin = contact.has("margin") ? contact.child("margin").number_in(0.0, 1.0, true)
+                                           : contact.number_or("margin", w.contact.margin);
+}
+
+void parse_camera(const JsonCursor& c, SceneDesc& scene) {
+  c.expect_object({"mode", "position", "target", "fov", "azimuth", "elevation", "distance", "turns", "body"});
+  CameraDesc& cam = scene.camera;
+  const std::string mode = c.string_or("mode", "fixed");
+  if (mode == "fixed") cam.mode = CameraMode::fixed;
+  else if (mode == "orbit") cam.mode = CameraMode::orbit;
+  else if (mode == "follow") cam.mode = CameraMode::follow;
+  else c.child("mode").fail("unknown camera mode \"" + mode + "\" (fixed, orbit or follow)");
+  auto only_for = [&](const char* key, CameraMode allowed, const char* mode_name) {
+    if (c.has(key) && cam.mode != allowed)
+      c.child(key).fail(std::string("only for camera mode \"") + mode_name + "\"");
+  };
+  only_for("position", CameraMode::fixed, "fixed");
+  only_for("turns", CameraMode::orbit, "orbit");
+  only_for("body", CameraMode::follow, "follow");
+  if (c.has("position")) {
+    cam.has_position = true;
+    cam.position = c.child("position").vec3();
+  }
+  if (c.has("target")) {
+    cam.has_target = true;
+    cam.target = c.child("target").vec3();
+  }
+  cam.fov = c.has("fov") ? c.child("fov").number_in(1.0, 170.0) : c.number_or("fov", cam.fov);
+  cam.azimuth = c.number_or("azimuth", cam.azimuth);
+  cam.elevation = c.has("elevation") ? c.child("elevation").number_in(-89.0, 89.0) : c.number_or("elevation", cam.elevation);
+  cam.distance = c.has("distance") ? c.child("distance").positive() : cam.distance;
+  if (cam.mode == CameraMode::orbit) cam.turns = c.number_or("turns", cam.turns);
+  if (cam.mode == CameraMode::follow) {
+    const JsonCursor body = c.child("body");
+    cam.body = body.string();
+    const SceneBody* followed = scene.find(cam.body);
+    if (!followed) body.fail("no body named \"" + cam.body + "\"");
+    if (followed->type == SceneBodyType::plane) body.fail("cannot follow the plane \"" + cam.body + "\"");
+  }
+  if (cam.has_position && cam.has_target && (cam.position - cam.target).norm() < 1e-9)
+    c.child("position").fail("must differ from target");
+}
+
+void parse_render(const JsonCursor& c, SceneDesc& scene) {
+  c.expect_object({"resolution", "fps", "msaa", "shadows", "background", "wireframe", "png_level", "ground", "camera"});
+  RenderOptions& r = scene.render;
+  if (c.has("resolution")) {
+    const auto wh = c.child("resolution").elements(2);
+    int size[2];
+    for (int k = 0; k < 2; ++k) {
+      size[k] = wh[static_cast<size_t>(k)].integer();
+      if (size[k] < 16 || size[k] > 16384)
+        wh[static_cast<size_t>(k)].fail("must be in [16, 16384], got " + std::to_string(size[k]));
+    }
+    r.resolution = std::to_string(size[0]) + "x" + std::to_string(size[1]);
+  } else {
+    c.child_or_empty("resolution").resolve_as(nlohmann::json::array({1280, 720}));
+  }
+  r.fps = c.has("fps") ? c.child("fps").number_in(0.0, 1000.0, true) : c.number_or("fps", r.fps);
+  if (c.has("msaa")) {
+    const JsonCursor m = c.child("msaa");
+    r.msaa = m.integer();
+    if (r.msaa != 0 && r.msaa != 2 && r.msaa != 4) m.fail("must be 0, 2 or 4, got " + std::to_string(r.msaa));
+  } else {
+    c.integer_or("msaa", r.msaa);
+  }
+  r.no_shadows = !c.boolean_or("shadows", true);
+  r.wireframe = c.boolean_or("wireframe", false);
+  if (c.has("png_level")) {
+    const JsonCursor p = c.child("png_level");
+    r.png_level = p.integer();
+    if (r.png_level < 0 || r.png_level > 9) p.fail("must be in [0, 9], got " + std::to_string(r.png_level));
+  } else {
+    c.integer_or("png_level", r.png_level);
+  }
+  r.background = c.string_or("background", r.background);
+  if (r.background != "transparent") parse_color(r.background, c.file() + ": " + c.pointer() + "/background");
+  const JsonCursor ground = c.child_or_empty("ground");
+  ground.expect_object({"grid"});
+  scene.grid = ground.boolean_or("grid", true);
+  parse_camera(c.child_or_empty("camera"), scene);
+}
+
+}  // namespace
+
+const char* to_string(SceneBodyType type) {
+  switch (type) {
+    case SceneBodyType::plane: return "plane";
+    case SceneBodyType::fixed: return "static";
+    case SceneBodyType::kinematic: return "kinematic";
+    case SceneBodyType::rigid: return "rigid";
+    case SceneBodyType::deformable: return "deformable";
+  }
+  return "?";
+}
+
+const char* solver_name(sim::SolverMethod method) {
+  switch (method) {
+    case sim::SolverMethod::cr: return "cr";
+    case sim::SolverMethod::cr_plain: return "cr-plain";
+    case sim::SolverMethod::pgs: return "pgs";
+  }
+  return "?";
+}
+
+int SceneDesc::frame_count() const {
+  // A hair of slack so that duration 3 at 30 fps gives 91 frames, not 90.
+  return static_cast<int>(std::floor(duration * render.fps + 1e-9)) + 1;
+}
+
+const SceneBody* SceneDesc::find(const std::string& body_name) const {
+  for (const SceneBody& b : bodies)
+    if (b.name == body_name) return &b;
+  return nullptr;
+}
+
+SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, const fs::path& base_dir) {
+  SceneDesc scene;
+  scene.resolved = nlohmann::json::object();
+  const JsonCursor root(document, scene.resolved, file);
+  root.expect_object({"recoil", "name", "description", "simulation", "bodies", "render"});
+  if (!root.has("recoil")) root.fail("missing \"recoil\": 1 (the scene format version)");
+  const JsonCursor version = root.child("recoil");
+  if (version.integer() != 1)
+    version.fail("unsupported scene format version " + version.value().dump() + " (this recoil reads version 1)");
+  scene.name = root.string_or("name", fs::path(file).stem().string());
+  if (scene.name.empty() || scene.name.find('/') != std::string::npos) root.child("name").fail("must be a non-empty name without '/'");
+  if (root.has("description")) root.child("description").string();
+  parse_simulation(root.child_or_empty("simulation"), scene);
+  const std::vector<JsonCursor> bodies = root.child("bodies").elements();
+  if (bodies.empty()) root.child("bodies").fail("a scene needs at least one body");
+  for (size_t i = 0; i < bodies.size(); ++i) parse_body(bodies[i], static_cast<int>(i), base_dir, scene);
+  parse_render(root.child_or_empty("render"), scene);
+  return scene;
+}
+
+SceneDesc load_scene(const fs::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  if (!in) throw bad_input(file.string() + ": cannot read the scene file");
+  std::ostringstream text;
+  text << in.rdbuf();
+  const nlohmann::json document = parse_json_text(text.str(), file.string());
+  SceneDesc scene = parse_scene(document, file.string(), file.parent_path().empty() ? fs::path(".") : file.parent_path());
+  scene.file = file;
+  return scene;
+}
+
+}  // namespace recoil::cli

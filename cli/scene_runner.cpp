@@ -1,0 +1,208 @@
+#include "cli/scene_runner.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <thread>
+
+#include "cli/frame_names.h"
+#include "cli/frame_stats.h"
+#include "cli/output_dir.h"
+#include "cli/progress.h"
+#include "cli/run_report.h"
+#include "cli/scene_view.h"
+#include "cli/video_encoder.h"
+#include "core/error.h"
+#include "render/frame_writer.h"
+#include "render/png.h"
+#include "render/renderer.h"
+#include "sim/world.h"
+
+namespace recoil::cli {
+namespace fs = std::filesystem;
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double ms_since(Clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Inverted elements are tolerated while they recover: the run fails once a
+// body stays inverted this long (simulated seconds), SPEC's "beyond recovery".
+constexpr double kInversionGrace = 0.1;
+
+}  // namespace
+
+Error scene_error(const Error& e, const SceneDesc& scene) {
+  const std::string message = e.what();
+  const std::string file = scene.file.empty() ? scene.name : scene.file.string();
+  struct Prefix {
+    const char* text;
+    bool (*matches)(SceneBodyType);
+  };
+  const Prefix prefixes[] = {
+      {"bodies/", [](SceneBodyType t) { return t == SceneBodyType::deformable; }},
+      {"rigid_bodies/",
+       [](SceneBodyType t) {
+         return t == SceneBodyType::rigid || t == SceneBodyType::kinematic || t == SceneBodyType::fixed;
+       }},
+      {"planes/", [](SceneBodyType t) { return t == SceneBodyType::plane; }},
+  };
+  for (const Prefix& prefix : prefixes) {
+    const size_t length = std::strlen(prefix.text);
+    if (message.rfind(prefix.text, 0) != 0) continue;
+    const size_t end = std::min(message.find_first_not_of("0123456789", length), message.size());
+    const int index = std::atoi(message.substr(length, end - length).c_str());
+    for (const SceneBody& body : scene.bodies)
+      if (prefix.matches(body.type) && body.index == index)
+        return Error(e.kind(), file + ": " + body.pointer + message.substr(end));
+  }
+  if (message.rfind("simulation/", 0) == 0) return Error(e.kind(), file + ": /" + message);
+  return Error(e.kind(), file + ": " + message);
+}
+
+namespace {
+
+void write_text_file(const fs::path& path, const std::string& text) {
+  const fs::path tmp = path.string() + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) throw output_error("cannot write " + tmp.string());
+  }
+  std::error_code ec;
+  fs::rename(tmp, path, ec);
+  if (ec) throw output_error("cannot write " + path.string() + ": " + ec.message());
+}
+
+std::string describe_failure(const sim::StepReport& r, int frame, const std::string& what) {
+  std::ostringstream s;
+  s << "simulation failed at frame " << frame << " (step " << r.step << ", t = " << r.time << " s): body '" << r.body
+    << "': " << what;
+  return s.str();
+}
+
+}  // namespace
+
+long frame_step(int frame, double fps, double dt) { return std::lround((frame - 1) / (fps * dt)); }
+
+RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
+  const auto start = Clock::now();
+  const SceneDesc& scene = job.scene;
+  const double fps = scene.render.fps, dt = scene.world.dt;
+  std::vector<int> selected = job.frames;
+  if (selected.empty())
+    for (int k = 1; k <= scene.frame_count(); ++k) selected.push_back(k);
+  const int last_frame = selected.back();
+  // Frame names keep their width whatever subset is rendered.
+  const int name_count = std::max(scene.frame_count(), last_frame);
+  if (!job.video.empty()) {
+    require_ffmpeg();
+    if (!job.render) throw bad_input("--video needs rendered frames; drop --no-render");
+  }
+
+  ensure_output_dir(job.output_dir);
+  write_text_file(job.output_dir / "scene.json", scene.resolved.dump(2) + "\n");
+  const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
+  if (stats_path.has_parent_path()) ensure_output_dir(stats_path.parent_path());
+  std::ofstream stats_out(stats_path, std::ios::binary | std::ios::trunc);
+  if (!stats_out) throw output_error("cannot write " + stats_path.string());
+
+  RunReport report(job, scene);
+  auto build_start = Clock::now();
+  std::unique_ptr<sim::World> world;
+  try {
+    world = std::make_unique<sim::World>(scene.world);
+  } catch (const Error& e) {
+    throw scene_error(e, scene);
+  }
+  report.timings.build = ms_since(build_start);
+
+  render::RenderSettings settings;
+  std::unique_ptr<render::Renderer> renderer;
+  std::unique_ptr<render::FrameWriter> writer;
+  std::unique_ptr<VideoEncoder> video;
+  std::unique_ptr<SceneView> view;
+  if (job.render) {
+    settings = to_render_settings(scene.render);
+    renderer = std::make_unique<render::Renderer>(settings);
+    // One encoder per spare core; llvmpipe uses the others while drawing.
+    const int encoders = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
+    writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), encoders, 2 * encoders + 1);
+    view = std::make_unique<SceneView>(scene, world->surfaces(), static_cast<double>(settings.width) / settings.height,
+                                       scene.render.color, scene.render.camera_distance);
+    if (!job.video.empty()) video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, fps);
+  }
+
+  Progress progress(global, "run", static_cast<int>(selected.size()));
+  RunResult result;
+  size_t next = 0;  // index into selected
+  long inverted_steps = 0;
+  const long grace_steps = std::max(1L, static_cast<long>(std::ceil(kInversionGrace / dt)));
+  render::Image image;
+  double encoded_before = 0.0;
+  for (int k = 1; k <= last_frame && !result.failed; ++k) {
+    FrameAccumulator acc;
+    const long target = frame_step(k, fps, dt);
+    while (world->counters().steps < target) {
+      const sim::StepReport r = world->step();
+      acc.add(r);
+      report.add_step(r);
+      if (r.status == sim::StepStatus::inverted) ++inverted_steps;
+      else if (r.status == sim::StepStatus::ok) inverted_steps = 0;
+      if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup) {
+        result.failed = true;
+        result.message = describe_failure(r, k, r.status == sim::StepStatus::nan ? "NaN in positions or velocities"
+                                                                                  : "energy blew up (diverged)");
+      } else if (r.status == sim::StepStatus::inverted && inverted_steps > grace_steps) {
+        result.failed = true;
+        std::ostringstream what;
+        what << r.inverted_tets << " inverted elements for longer than " << kInversionGrace << " s (beyond recovery)";
+        result.message = describe_failure(r, k, what.str());
+      }
+      if (result.failed) break;
+    }
+    if (result.failed) break;
+    if (next >= selected.size() || selected[next] != k) continue;
+    ++next;
+    FrameTimes times;
+    if (job.render) {
+      const fs::path path = job.output_dir / frame_file_name(k, name_count);
+      std::error_code ec;
+      if (job.resume && fs::is_regular_file(path, ec)) {
+        ++result.frames_skipped;
+        if (video) video->add(render::read_png(path));
+      } else {
+        const auto render_start = Clock::now();
+        const render::RenderScene& drawn = view->update(world->surfaces());
+        renderer->render(drawn, view->camera(k, name_count), image);
+        times.render = ms_since(render_start);
+        if (video) video->add(image);
+        writer->submit(path, image);
+        ++result.frames_written;
+      }
+      times.encode = writer->encode_ms() - encoded_before;
+      encoded_before = writer->encode_ms();
+    }
+    report.add_frame(times);
+    stats_out << frame_stats_json(k, (k - 1) / fps, world->time(), acc, world->stats(), scene, times).dump() << "\n";
+    stats_out.flush();
+    if (!stats_out) throw output_error("cannot write " + stats_path.string());
+    progress.update(static_cast<int>(next));
+  }
+  progress.finish();
+  if (writer) writer->finish();
+  if (video && !result.failed) video->finish();
+  report.timings.encode = writer ? writer->encode_ms() : 0.0;
+  result.steps = world->counters().steps;
+  report.finish(*world, result, ms_since(start));
+  write_text_file(job.output_dir / "run.json", report.json().dump(2) + "\n");
+  if (result.failed) throw Error(ErrorKind::sim_failed, result.message);
+  return result;
+}
+
+}  // namespace recoil::cli

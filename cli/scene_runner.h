@@ -1,0 +1,49 @@
+#pragma once
+// The frame loop of `recoil run` (and `drop`): the simulation clock (steps of
+// dt) against the frame clock (frame k at (k - 1) / fps), rendering the
+// selected frames through the renderer and FrameWriter, stats.jsonl, run.json
+// and the optional video. Apart from its command-line parsing so tests and
+// benchmarks drive exactly what the commands do.
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "cli/commands.h"
+#include "cli/scene_desc.h"
+#include "core/error.h"
+
+namespace recoil::cli {
+
+struct RunJob {
+  SceneDesc scene;                        // overrides from the command line already applied
+  std::vector<int> frames;                // selected frames, ascending; empty: every frame of the scene
+  std::filesystem::path output_dir;
+  std::filesystem::path stats_path;       // empty: output_dir / stats.jsonl
+  std::filesystem::path video;            // empty: no video
+  bool render = true;
+  bool resume = false;                    // keep frames already on disk
+  std::string command;                    // the command line, for run.json
+};
+
+struct RunResult {
+  int frames_written = 0;
+  int frames_skipped = 0;   // --resume: already on disk
+  long steps = 0;
+  bool failed = false;
+  std::string message;      // what failed
+};
+
+// Writes scene.json first, then frames, stats and run.json into job.output_dir
+// (created). A failed simulation throws Error(sim_failed) naming the frame and
+// the body after the frames so far are on disk and run.json records it.
+RunResult run_scene(const RunJob& job, const GlobalOptions& global);
+
+// World errors name "bodies/i", "rigid_bodies/i" or "planes/i" by index in
+// the WorldDesc lists; the user knows the scene's /bodies/j: the same error
+// naming the scene file and that pointer.
+Error scene_error(const Error& e, const SceneDesc& scene);
+
+// Steps at which frame k (1-based) is taken: round((k - 1) / (fps dt)).
+long frame_step(int frame, double fps, double dt);
+
+}  // namespace recoil::cli

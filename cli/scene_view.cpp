@@ -1,0 +1,130 @@
+#include "cli/scene_view.h"
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "cli/render_bridge.h"
+#include "core/check.h"
+#include "sim/geometry/primitives.h"
+
+namespace recoil::cli {
+namespace {
+
+// A plane this close to facing +y is drawn by the renderer's own ground.
+constexpr double kHorizontal = 0.9999;
+// Tilted planes are drawn as square slabs this wide and thick (metres).
+constexpr double kSlabSize = 12.0;
+constexpr double kSlabThickness = 0.02;
+const render::Rgb kSlabColor = {0.55f, 0.56f, 0.58f};
+
+sim::Aabb bounds_of(const sim::Points& points) {
+  sim::Aabb box;
+  for (Eigen::Index v = 0; v < points.rows(); ++v) box.extend(points.row(v).transpose());
+  return box;
+}
+
+sim::TriMesh slab_for(const sim::PlaneDesc& plane) {
+  const Eigen::Vector3d n = plane.normal.normalized();
+  sim::TriMesh slab = sim::make_box(Eigen::Vector3d(kSlabSize, kSlabThickness, kSlabSize), 4);
+  const Eigen::Matrix3d R = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitY(), n).toRotationMatrix();
+  sim::transform_in_place(slab, R, Eigen::Vector3d::Ones(), plane.point - 0.5 * kSlabThickness * n);
+  return slab;
+}
+
+}  // namespace
+
+SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>& surfaces, double aspect,
+                     const std::string& color_override, double camera_distance)
+    : m_scene(scene), m_camera(scene.camera), m_aspect(aspect), m_last(surfaces) {
+  if (camera_distance > 0) m_camera.distance = camera_distance;
+  const render::Rgb* override_color = nullptr;
+  render::Rgb parsed{};
+  if (!color_override.empty()) {
+    parsed = parse_color(color_override, "--color");
+    override_color = &parsed;
+  }
+  m_render.ground = false;
+  m_render.grid = scene.grid;
+  bool have_ground = false;
+  for (const SceneBody& body : scene.bodies) {
+    if (body.type != SceneBodyType::plane) continue;
+    const sim::PlaneDesc& plane = scene.world.planes[static_cast<size_t>(body.index)];
+    if (plane.normal.normalized().y() > kHorizontal && !have_ground) {
+      have_ground = true;
+      m_render.ground = true;
+      m_render.ground_height = static_cast<float>(plane.point.y());
+    } else {
+      m_render.meshes.push_back(to_render_mesh(slab_for(plane), kSlabColor));
+    }
+  }
+  sim::Aabb box;
+  for (size_t i = 0; i < surfaces.size(); ++i) {
+    const sim::BodySurface& s = surfaces[i];
+    const SceneBody* body = scene.find(s.name);
+    const render::Rgb color = override_color ? *override_color : body ? body->color : palette_color(static_cast<int>(i));
+    const float opacity = body ? body->opacity : 1.0f;
+    sim::TriMesh mesh{s.positions, s.triangles};
+    m_mesh_of_surface.push_back(static_cast<int>(m_render.meshes.size()));
+    m_render.meshes.push_back(to_render_mesh(mesh, color, opacity));
+    const sim::Aabb b = bounds_of(s.positions);
+    if (!b.valid()) continue;
+    if (s.name == m_camera.body) {
+      m_follow = static_cast<int>(i);
+      // Room around the body so its surroundings show: a few body sizes.
+      m_follow_radius = std::max(1.5 * b.extent().norm(), 0.1);
+    }
+    box.extend(b.min);
+    box.extend(b.max);
+    // Keep the landing spot in view: the footprint on the ground too.
+    if (have_ground) {
+      box.extend(Eigen::Vector3d(b.min.x(), m_render.ground_height, b.min.z()));
+      box.extend(Eigen::Vector3d(b.max.x(), m_render.ground_height, b.max.z()));
+    }
+  }
+  if (!box.valid()) {
+    box.extend(Eigen::Vector3d::Constant(-0.5));
+    box.extend(Eigen::Vector3d::Constant(0.5));
+  }
+  m_fit_target = box.center();
+  m_fit_radius = std::max(0.5 * box.extent().norm(), 0.05);
+}
+
+const render::RenderScene& SceneView::update(const std::vector<sim::BodySurface>& surfaces) {
+  RECOIL_CHECK(surfaces.size() == m_mesh_of_surface.size(),
+               "surfaces=" << surfaces.size() << " meshes=" << m_mesh_of_surface.size());
+  for (size_t i = 0; i < surfaces.size(); ++i)
+    update_positions(m_render.meshes[static_cast<size_t>(m_mesh_of_surface[i])], surfaces[i].positions);
+  m_last = surfaces;
+  return m_render;
+}
+
+render::Camera SceneView::camera(int frame, int frame_count) const {
+  const CameraDesc& c = m_camera;
+  auto place = [&](const Eigen::Vector3d& target, double radius, double azimuth) {
+    render::Camera cam = render::frame_bounding_sphere(target, radius, azimuth, c.elevation, c.fov, m_aspect);
+    if (c.distance > 0) cam.eye = cam.target + c.distance * (cam.eye - cam.target).normalized();
+    return cam;
+  };
+  const Eigen::Vector3d target = c.has_target ? c.target : m_fit_target;
+  switch (c.mode) {
+    case CameraMode::fixed: {
+      if (!c.has_position) return place(target, m_fit_radius, c.azimuth);
+      render::Camera cam;
+      cam.eye = c.position;
+      cam.target = target;
+      cam.fov_y_degrees = c.fov;
+      return cam;
+    }
+    case CameraMode::orbit:
+      return place(target, m_fit_radius, render::orbit_azimuth_deg(frame - 1, frame_count, c.turns, c.azimuth));
+    case CameraMode::follow: {
+      if (m_follow < 0) return place(target, m_fit_radius, c.azimuth);
+      const sim::Aabb b = bounds_of(m_last[static_cast<size_t>(m_follow)].positions);
+      if (!b.valid() || !b.min.allFinite() || !b.max.allFinite()) return place(target, m_fit_radius, c.azimuth);
+      return place(b.center(), m_follow_radius, c.azimuth);
+    }
+  }
+  return place(target, m_fit_radius, c.azimuth);
+}
+
+}  // namespace recoil::cli

@@ -1,0 +1,40 @@
+#pragma once
+// What a scene looks like at a frame: the world's surfaces copied into a
+// render::RenderScene with each body's colour and opacity (through
+// render_bridge), planes drawn as the ground (a horizontal one) or as large
+// slabs (tilted ones), and the camera of the scene's mode.
+#include <vector>
+
+#include "cli/scene_desc.h"
+#include "render/camera.h"
+#include "render/render_scene.h"
+#include "sim/world.h"
+
+namespace recoil::cli {
+
+class SceneView {
+ public:
+  // `surfaces`: the world's surfaces at time 0 (they fix the framing of a
+  // camera without a position); `aspect` = width / height.
+  SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>& surfaces, double aspect,
+            const std::string& color_override = "", double camera_distance = 0.0);
+
+  // Updates the meshes to `surfaces` (same bodies as at construction).
+  const render::RenderScene& update(const std::vector<sim::BodySurface>& surfaces);
+  // The camera of frame `frame` (1-based) of `frame_count`, for the current surfaces.
+  render::Camera camera(int frame, int frame_count) const;
+
+ private:
+  const SceneDesc& m_scene;
+  CameraDesc m_camera;
+  double m_aspect;
+  render::RenderScene m_render;
+  std::vector<int> m_mesh_of_surface;            // surface i -> m_render.meshes index
+  std::vector<sim::BodySurface> m_last;           // current surfaces (for follow)
+  int m_follow = -1;                              // surface index of the followed body
+  double m_follow_radius = 0.1;                   // m: fixed at frame 1 so the view does not breathe
+  Eigen::Vector3d m_fit_target = Eigen::Vector3d::Zero();
+  double m_fit_radius = 1.0;
+};
+
+}  // namespace recoil::cli

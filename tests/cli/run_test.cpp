@@ -1,0 +1,236 @@
+// `recoil run` and `recoil drop` end to end (SPEC.md sections 2, 4, 5): every
+// shipped scene runs, stats.jsonl keys and types, determinism, --resume,
+// exit 3 on a diverging scene with the earlier frames kept, and drop piles
+// that reproduce and save a scene `run` accepts.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "cli/video_encoder.h"
+#include "render/png.h"
+#include "tests/test_support.h"
+
+namespace recoil::test {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+std::string file_bytes(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::ostringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::vector<json> read_stats(const fs::path& path) {
+  std::vector<json> lines;
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) lines.push_back(json::parse(line));
+  return lines;
+}
+
+// Stats with the wall-clock fields removed (they differ between runs).
+json without_timings(json line) {
+  line.erase("ms");
+  line["solver"].erase("ms");
+  return line;
+}
+
+int count_pngs(const fs::path& dir) {
+  int n = 0;
+  for (const auto& e : fs::directory_iterator(dir)) n += e.path().extension() == ".png";
+  return n;
+}
+
+std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
+
+}  // namespace
+
+TEST(RunCommand, EveryShippedSceneRuns) {
+  std::vector<fs::path> scenes;
+  for (const auto& e : fs::recursive_directory_iterator(source_path("assets/scenes")))
+    if (e.path().extension() == ".json") scenes.push_back(e.path());
+  std::sort(scenes.begin(), scenes.end());
+  ASSERT_GE(scenes.size(), 14u);
+  for (const fs::path& scene : scenes) {
+    const fs::path dir = scratch_dir("every_scene_" + scene.stem().string() + scene.parent_path().filename().string());
+    const CommandResult r = run_recoil("run " + q(scene) + " --frames 1-2 --no-render -q -o " + q(dir));
+    EXPECT_EQ(r.exit_code, 0) << scene << ": " << r.err;
+    const std::vector<json> stats = read_stats(dir / "stats.jsonl");
+    ASSERT_EQ(stats.size(), 2u) << scene;
+    EXPECT_EQ(stats[1]["frame"], 2);
+    EXPECT_TRUE(fs::exists(dir / "scene.json"));
+    const json run = json::parse(file_bytes(dir / "run.json"));
+    EXPECT_EQ(run["exit"]["code"], 0);
+    std::cout << scene.filename().string() << ": " << run["steps"] << " steps, " << run["timings_ms"]["total"] << " ms\n";
+  }
+}
+
+TEST(RunCommand, RendersTheSelectedFramesAndWritesSpecStats) {
+  const fs::path dir = scratch_dir("run_render");
+  const fs::path scene = source_path("assets/scenes/bunny-drop.json");
+  const CommandResult r = run_recoil("run " + q(scene) + " --frames 1,3 --resolution 64x48 -o " + q(dir));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(count_pngs(dir), 2);
+  ASSERT_TRUE(fs::exists(dir / "frame_0003.png"));
+  const render::Image image = render::read_png(dir / "frame_0003.png");
+  EXPECT_EQ(image.width, 64);
+  EXPECT_EQ(image.height, 48);
+  const std::vector<json> stats = read_stats(dir / "stats.jsonl");
+  ASSERT_EQ(stats.size(), 2u);
+  const json& s = stats[1];
+  EXPECT_EQ(s["frame"], 3);
+  EXPECT_NEAR(s["time"].get<double>(), 2.0 / 30.0, 1e-12);  // frame k at (k - 1) / fps
+  EXPECT_NEAR(s["sim_time"].get<double>(), 2.0 / 30.0, 0.004 / 2 + 1e-12);
+  // Frame 3 sums the steps between frames 2 and 3 only: frame k is taken
+  // after round((k - 1) / (fps dt)) steps, so 17 - 8 of them.
+  EXPECT_EQ(s["steps"], 9);
+  EXPECT_EQ(stats[0]["steps"], 0);  // frame 1 is the initial state
+  for (const char* key : {"contacts", "active", "sticking", "sliding"}) EXPECT_TRUE(s[key].is_number_integer()) << key;
+  EXPECT_TRUE(s["solver"]["iterations"].is_number_integer());
+  EXPECT_TRUE(s["solver"]["restarts"].is_number_integer());
+  EXPECT_TRUE(s["solver"]["residual"].is_number());
+  EXPECT_TRUE(s["solver"]["ms"].is_number());
+  EXPECT_TRUE(s["max_penetration"].is_number());
+  for (const char* key : {"step", "collision", "solve", "render", "encode"}) EXPECT_TRUE(s["ms"][key].is_number()) << key;
+  EXPECT_GT(s["ms"]["render"].get<double>(), 0.0);
+  // Dynamic bodies in scene order: the deformable bunny, then the rigid crate
+  // (the crate only while the world reports rigid bodies).
+  ASSERT_GE(s["bodies"].size(), 1u);
+  const json& bunny = s["bodies"][0];
+  EXPECT_EQ(bunny["name"], "bunny");
+  EXPECT_EQ(bunny["com"].size(), 3u);
+  EXPECT_EQ(bunny["velocity"].size(), 3u);
+  for (const char* key : {"kinetic_energy", "elastic_energy", "min_volume_ratio"}) EXPECT_TRUE(bunny[key].is_number()) << key;
+  // Falling from rest: after 2/30 s the bunny moves down at about g t.
+  std::cout << "bunny velocity at frame 3: " << bunny["velocity"].dump() << "\n";
+  EXPECT_LT(bunny["velocity"][1].get<double>(), -0.3);
+  const json run = json::parse(file_bytes(dir / "run.json"));
+  for (const char* key : {"version", "build", "timings_ms", "solver_totals", "exit"}) EXPECT_TRUE(run.contains(key)) << key;
+  EXPECT_EQ(run["frames"]["written"], 2);
+  const json resolved = json::parse(file_bytes(dir / "scene.json"));
+  EXPECT_EQ(resolved["render"]["resolution"], json::array({64, 48}));  // the override is recorded
+}
+
+TEST(RunCommand, SameSceneTwiceGivesIdenticalFramesAndStats) {
+  const fs::path a = scratch_dir("run_det_a"), b = scratch_dir("run_det_b");
+  const fs::path scene = source_path("assets/scenes/jelly-stack.json");
+  for (const fs::path& dir : {a, b}) {
+    const CommandResult r = run_recoil("run " + q(scene) + " --frames 1-3 --resolution 64x48 -o " + q(dir));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  for (const char* name : {"frame_0001.png", "frame_0002.png", "frame_0003.png"})
+    EXPECT_EQ(file_bytes(a / name), file_bytes(b / name)) << name;
+  EXPECT_NE(file_bytes(a / "frame_0001.png"), file_bytes(a / "frame_0003.png"));  // the orbit camera moves
+  const std::vector<json> sa = read_stats(a / "stats.jsonl"), sb = read_stats(b / "stats.jsonl");
+  ASSERT_EQ(sa.size(), 3u);
+  ASSERT_EQ(sb.size(), 3u);
+  for (size_t i = 0; i < sa.size(); ++i) EXPECT_EQ(without_timings(sa[i]), without_timings(sb[i])) << "frame " << i + 1;
+  EXPECT_EQ(file_bytes(a / "scene.json"), file_bytes(b / "scene.json"));
+}
+
+TEST(RunCommand, ResumeSkipsFramesAlreadyOnDisk) {
+  const fs::path dir = scratch_dir("run_resume");
+  const std::string command = "run " + q(source_path("assets/scenes/validation/rest.json")) +
+                              " --frames 1-3 --resolution 32x32 --msaa 0 -o " + q(dir);
+  ASSERT_EQ(run_recoil(command).exit_code, 0);
+  // A marker in frame 1 survives a resume; the missing frame 2 is rendered again.
+  const std::string frame2 = file_bytes(dir / "frame_0002.png");
+  { std::ofstream(dir / "frame_0001.png", std::ios::binary) << "kept"; }
+  fs::remove(dir / "frame_0002.png");
+  const CommandResult r = run_recoil(command + " --resume");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(file_bytes(dir / "frame_0001.png"), "kept");
+  EXPECT_EQ(file_bytes(dir / "frame_0002.png"), frame2);
+  const json run = json::parse(file_bytes(dir / "run.json"));
+  EXPECT_EQ(run["frames"]["written"], 1);
+  EXPECT_EQ(run["frames"]["skipped"], 2);
+  EXPECT_EQ(read_stats(dir / "stats.jsonl").size(), 3u);  // the simulation still ran every frame
+}
+
+TEST(RunCommand, DivergingSceneExits3NamingFrameAndBodyAndKeepsEarlierFrames) {
+  const fs::path dir = scratch_dir("run_diverge");
+  // A column of nearly no stiffness, pinned at its base, with huge steps:
+  // its top falls through its bottom and stays inverted.
+  const fs::path scene = dir / "collapse.json";
+  std::ofstream(scene) << R"({"recoil": 1, "name": "collapse",
+    "simulation": {"dt": 0.05, "duration": 2},
+    "bodies": [{"name": "column", "type": "deformable", "primitive": {"box": [0.1, 0.6, 0.1]},
+                "tets": {"resolution": 4}, "material": {"youngs_modulus": 1, "poisson_ratio": 0.3, "density": 1000},
+                "pinned": {"min": [-1, -1, -1], "max": [1, 0.01, 1]}, "transform": {"position": [0, 0.3, 0]}}],
+    "render": {"fps": 10, "resolution": [32, 32], "msaa": 0}})";
+  const fs::path out = dir / "out";
+  const CommandResult r = run_recoil("run " + q(scene) + " -o " + q(out));
+  std::cout << r.err;
+  EXPECT_EQ(r.exit_code, 3) << r.err;
+  EXPECT_NE(r.err.find("recoil: error: simulation failed at frame "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("body 'column'"), std::string::npos) << r.err;
+  EXPECT_TRUE(fs::exists(out / "frame_0001.png"));
+  const json run = json::parse(file_bytes(out / "run.json"));
+  EXPECT_EQ(run["exit"]["code"], 3);
+  const int frames = count_pngs(out);
+  EXPECT_GE(frames, 1);
+  EXPECT_EQ(static_cast<int>(read_stats(out / "stats.jsonl").size()), frames);
+  for (const auto& e : fs::directory_iterator(out)) EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
+}
+
+TEST(DropCommand, SeededPileReproducesAndSavesASceneRunAccepts) {
+  const fs::path a = scratch_dir("drop_a"), b = scratch_dir("drop_b");
+  const fs::path bunny = source_path("assets/meshes/bunny.obj");
+  for (const fs::path& dir : {a, b}) {
+    const CommandResult r = run_recoil("drop " + q(bunny) + " --count 3 --material jelly --frames 1-2 --no-render -o " +
+                                       q(dir / "out") + " --save-scene " + q(dir / "pile.json"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  EXPECT_EQ(file_bytes(a / "pile.json"), file_bytes(b / "pile.json"));
+  const std::vector<json> sa = read_stats(a / "out" / "stats.jsonl"), sb = read_stats(b / "out" / "stats.jsonl");
+  ASSERT_EQ(sa.size(), 2u);
+  for (size_t i = 0; i < sa.size(); ++i) EXPECT_EQ(without_timings(sa[i]), without_timings(sb[i]));
+  ASSERT_EQ(sa[0]["bodies"].size(), 3u);
+  // A loose pile: the bodies start apart, above the ground, at different heights.
+  std::vector<double> heights;
+  for (const json& body : sa[0]["bodies"]) heights.push_back(body["com"][1].get<double>());
+  std::cout << "pile heights " << sa[0]["bodies"][0]["com"] << " " << sa[0]["bodies"][1]["com"] << " " << sa[0]["bodies"][2]["com"] << "\n";
+  for (double h : heights) EXPECT_GT(h, 0.1);
+  const json saved = json::parse(file_bytes(a / "pile.json"));
+  EXPECT_EQ(saved["bodies"].size(), 4u);  // ground + 3
+  const fs::path rerun = scratch_dir("drop_rerun");
+  const CommandResult r = run_recoil("run " + q(a / "pile.json") + " --frames 1-2 --no-render -o " + q(rerun));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<json> sr = read_stats(rerun / "stats.jsonl");
+  ASSERT_EQ(sr.size(), 2u);
+  EXPECT_EQ(without_timings(sr[1]), without_timings(sa[1]));  // the saved scene is the scene that ran
+}
+
+TEST(RunCommand, VideoWithoutFfmpegFailsAtOnceWithTheInstallCommand) {
+  if (!cli::find_ffmpeg().empty()) GTEST_SKIP() << "ffmpeg is installed here";
+  const fs::path dir = scratch_dir("run_video");
+  const CommandResult r = run_recoil("run " + q(source_path("assets/scenes/bunny-drop.json")) + " --video " +
+                                     q(dir / "v.mp4") + " -o " + q(dir / "out"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("scripts/install-deps.sh --video"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "frame_0001.png"));
+}
+
+TEST(InfoCommand, SceneListsBodiesAndTetrahedra) {
+  const CommandResult r = run_recoil("info " + q(source_path("assets/scenes/jelly-stack.json")) + " --json");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json info = json::parse(r.out);
+  EXPECT_EQ(info["name"], "jelly-stack");
+  EXPECT_EQ(info["frames"], 91);
+  ASSERT_EQ(info["bodies"].size(), 4u);
+  EXPECT_EQ(info["bodies"][0]["type"], "plane");
+  EXPECT_EQ(info["bodies"][1]["type"], "deformable");
+  EXPECT_GT(info["bodies"][1]["tets"].get<int>(), 50);
+  // A 0.2 m jelly cube of density 1000: 8 kg.
+  EXPECT_NEAR(info["bodies"][1]["mass"].get<double>(), 8.0, 0.08);
+  const CommandResult text = run_recoil("info " + q(source_path("assets/scenes/jelly-stack.json")));
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("jelly-2"), std::string::npos) << text.out;
+}
+
+}  // namespace recoil::test
