@@ -161,7 +161,7 @@ TEST(RunCommand, DivergingSceneExits3NamingFrameAndBodyAndKeepsEarlierFrames) {
     "simulation": {"dt": 0.05, "duration": 2},
     "bodies": [{"name": "column", "type": "deformable", "primitive": {"box": [0.1, 0.6, 0.1]},
                 "tets": {"resolution": 4}, "material": {"youngs_modulus": 1, "poisson_ratio": 0.3, "density": 1000},
-                "pinned": {"min": [-1, -1, -1], "max": [1, 0.01, 1]}, "transform": {"position": [0, 0.3, 0]}}],
+                "pinned": {"min": [-1, -1, -1], "max": [1, 0.01, 1]}, "self_contact": false, "transform": {"position": [0, 0.3, 0]}}],
     "render": {"fps": 10, "resolution": [32, 32], "msaa": 0}})";
   const fs::path out = dir / "out";
   const CommandResult r = run_recoil("run " + q(scene) + " -o " + q(out));
