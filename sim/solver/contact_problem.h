@@ -87,6 +87,8 @@ struct ContactSolverStats {
   double ms = 0.0;             // wall-clock
   // Added with the solvers: the common accuracy measure (sim/solver/kkt_residual.h), m/s.
   double kkt = 0.0;
+  // Added with issue #5: contacts that reached max_flips (frozen in the active state; cr only).
+  int frozen = 0;
 };
 
 // What the solver calls back, once converged, for Algorithm 1's outer loop:

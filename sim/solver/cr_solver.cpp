@@ -13,6 +13,13 @@ namespace {
 
 // Below this |z^T B z| / (|z| |B z|) the CR recurrence has broken down.
 constexpr double kBreakdown = 1e-12;
+// Algorithm 1 line 21 stops when |B C^-1 r| < epsilon_1: r then lies in the
+// (near) null space of B and no Krylov step can reduce it (redundant rows
+// with right-hand sides consistent only to round-off). Alone, that test
+// would also stop an ill-conditioned but regular system whose residual sits
+// in a slow eigen-direction (|B C^-1 r| ~ lambda_min |r|, lambda_min ~ 1e-3
+// for stiff FEM), so it must also be this small relative to |r|.
+constexpr double kStationary = 1e-6;
 
 class CrSolver {
  public:
@@ -38,10 +45,13 @@ class CrSolver {
   void apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   void apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   double scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const;
+  void recompute_residual();
+  void update_stationary();
   void restart_true();
   void restart_recurrence();
   void rescue_step();
-  bool finish_or_continue();
+  enum class Finish { converged, not_converged, go_on };
+  Finish finish_or_continue();
   bool step();
   bool out_of_budget() const { return m_stats.iterations + m_stats.restarts >= m_settings.max_iterations; }
 
@@ -57,6 +67,8 @@ class CrSolver {
   double m_rho = 0.0;
   int m_since_restart = 0;
   bool m_residual_true = false;
+  bool m_stationary = false;       // scaled |B C^-1 r| < epsilon_1 (Algorithm 1 line 21)
+  bool m_relinearized_ok = false;  // the last relinearize moved nothing beyond epsilon_2, and nothing changed since
 };
 
 void CrSolver::start_from_warm_states() {
@@ -166,11 +178,22 @@ double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) c
   return std::sqrt(sum);
 }
 
-// Restart from the explicitly recomputed residual r = d - B y.
-void CrSolver::restart_true() {
+// r = d - B y, explicitly; y is left as it is.
+void CrSolver::recompute_residual() {
   apply_B(m_y, m_r);
   m_r = m_d - m_r;
   m_residual_true = true;
+}
+
+void CrSolver::update_stationary() {
+  double constraint_inf = 0.0;
+  const double bcr = scaled_norm(m_bz, constraint_inf);
+  m_stationary = bcr < m_settings.tolerance && bcr < kStationary * scaled_norm(m_r, constraint_inf);
+}
+
+// Restart from the explicitly recomputed residual.
+void CrSolver::restart_true() {
+  recompute_residual();
   restart_recurrence();
 }
 
@@ -181,6 +204,7 @@ void CrSolver::restart_recurrence() {
   m_q = m_bz;
   m_rho = m_z.dot(m_bz);
   m_since_restart = 0;
+  update_stationary();
   double constraint_inf = 0.0;
   if (std::abs(m_rho) <= kBreakdown * m_z.norm() * m_bz.norm() && scaled_norm(m_r, constraint_inf) >= m_settings.tolerance)
     rescue_step();
@@ -206,6 +230,7 @@ void CrSolver::rescue_step() {
   apply_B(m_z, m_bz);
   m_q = m_bz;
   m_rho = m_z.dot(m_bz);
+  update_stationary();
 }
 
 // One CR iteration (Algorithm 1 lines 9-21). Returns false when it had to
@@ -239,6 +264,7 @@ bool CrSolver::step() {
     }
   }
   apply_B(m_z, m_bz);
+  update_stationary();
   const double rho = m_z.dot(m_bz);
   if (std::abs(rho) <= kBreakdown * m_z.norm() * m_bz.norm()) {
     ++m_stats.restarts;
@@ -252,44 +278,51 @@ bool CrSolver::step() {
   return true;
 }
 
-// Algorithm 1 lines 22-31 once the residual is below epsilon_1: re-check on
-// the true residual, evaluate every constraint, look for new contacts,
-// re-linearise. Returns true when the solve is done.
-bool CrSolver::finish_or_continue() {
+// Algorithm 1 lines 22-31 once the residual is below epsilon_1 (or
+// stationary): re-check on the true residual, evaluate every constraint,
+// look for new contacts, re-linearise. Done only when a re-linearisation
+// moved nothing beyond epsilon_2 and the system it left was solved without
+// any further change; at the re-linearisation cap the solve ends unconverged.
+CrSolver::Finish CrSolver::finish_or_continue() {
   if (!m_residual_true) {
     ++m_stats.restarts;
     restart_true();
-    return false;
+    return Finish::go_on;
   }
   const double eps2 = m_settings.constraint_tolerance;
   if (evaluate_constraints(m_problem, m_tracks, m_y, eps2, m_settings.max_flips, true) > 0) {
+    m_relinearized_ok = false;
     ++m_stats.restarts;
     build_rhs();
     restart_true();
-    return false;
+    return Finish::go_on;
   }
-  if (m_linearization == nullptr) return true;
+  if (m_linearization == nullptr) return Finish::converged;
   const Eigen::VectorXd dv = m_y.head(m_n);
   const int added = m_linearization->add_new_contacts(dv, m_problem);
   if (added > 0) {
+    m_relinearized_ok = false;
     m_stats.new_contacts += added;
     grow_contacts();
     refresh_rows();
     ++m_stats.restarts;
     build_rhs();
     restart_true();
-    return false;
+    return Finish::go_on;
   }
-  if (m_stats.relinearizations >= m_settings.max_relinearizations) return true;
+  if (m_relinearized_ok) return Finish::converged;
+  if (m_stats.relinearizations >= m_settings.max_relinearizations) return Finish::not_converged;
   const double change = m_linearization->relinearize(dv, m_problem);
   ++m_stats.relinearizations;
   RECOIL_CHECK(m_problem.rows.size() == m_tracks.size(), "relinearize must not add contacts");
+  m_relinearized_ok = change <= eps2;
+  // The normals and tangents may have turned even when the right-hand sides
+  // barely moved: solve again on the recomputed residual before returning.
   refresh_rows();
   build_rhs();
-  restart_true();
-  if (change <= eps2) return true;
   ++m_stats.restarts;
-  return false;
+  restart_true();
+  return Finish::go_on;
 }
 
 void CrSolver::run(Eigen::VectorXd& dv) {
@@ -301,27 +334,34 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   while (!out_of_budget()) {
     double constraint_inf = 0.0;
     const double res = scaled_norm(m_r, constraint_inf);
-    if (res < m_settings.tolerance && (!m_residual_true || constraint_inf < m_settings.constraint_tolerance)) {
-      if (finish_or_continue()) {
-        m_stats.converged = true;
-        break;
-      }
-      continue;
+    const bool small = res < m_settings.tolerance && (!m_residual_true || constraint_inf < m_settings.constraint_tolerance);
+    if (small || m_stationary) {
+      const Finish finish = finish_or_continue();
+      if (finish == Finish::go_on) continue;
+      m_stats.converged = finish == Finish::converged;
+      break;
     }
     step();
   }
-  // Hand back what the iterate says, converged or not.
-  dv = m_y.head(m_n);
+  // Hand back what the iterate says, converged or not: dv, the multipliers
+  // and the residual all describe the same y (no step after this point).
+  if (!m_residual_true) recompute_residual();
   double constraint_inf = 0.0;
-  if (!m_residual_true) restart_true();
   m_stats.residual = scaled_norm(m_r, constraint_inf);
+  dv = m_y.head(m_n);
+  const int max_flips = m_settings.max_flips;
   for (int k = 0; k < contacts(); ++k) {
     ContactState& s = m_problem.states[static_cast<size_t>(k)];
+    const ContactTrack& track = m_tracks[static_cast<size_t>(k)];
+    if (track.flips >= max_flips) ++m_stats.frozen;
     if (s.mode == ContactMode::inactive) {
       s = ContactState{};
       continue;
     }
     s.lambda = m_y[m_n + 3 * k];
+    // A contact frozen in the active state that pulls (lambda < 0) is not a
+    // solution of the complementarity problem: say so.
+    if (track.flips >= max_flips && s.lambda * track.w[0] < -m_settings.constraint_tolerance) m_stats.converged = false;
     if (s.mode == ContactMode::sticking) {
       s.gamma = m_y.segment<2>(m_n + 3 * k + 1);
       ++m_stats.sticking;

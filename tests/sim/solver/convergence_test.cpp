@@ -39,7 +39,7 @@ TEST(SolverConvergence, CrAgreesWithPgsOnRandomFrictionalProblems) {
     OwnedProblem owned = random_friction_problem(rng);
     const auto cr = solve_copy(owned.problem, tight(SolverMethod::cr));
     const auto pgs = solve_copy(owned.problem, tight(SolverMethod::pgs));
-    ASSERT_TRUE(cr.stats.converged) << "trial " << trial;
+    ASSERT_TRUE(cr.stats.converged) << "trial " << trial << " it " << cr.stats.iterations << " restarts " << cr.stats.restarts << " frozen " << cr.stats.frozen << " kkt " << cr.stats.kkt << " res " << cr.stats.residual;
     ASSERT_TRUE(pgs.stats.converged) << "trial " << trial;
     const double scale = std::max(1.0, pgs.dv.lpNorm<Eigen::Infinity>());
     const double err = (cr.dv - pgs.dv).lpNorm<Eigen::Infinity>() / scale;
