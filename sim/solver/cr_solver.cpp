@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/LU>
+#include <memory>
+
 #include "core/check.h"
+#include "sim/solver/block_ssor.h"
 #include "sim/solver/constraint_evaluation.h"
 #include "sim/solver/contact_rows_ops.h"
 
@@ -27,7 +31,10 @@ class CrSolver {
            ContactLinearization* linearization, ContactSolverStats& stats)
       : m_problem(problem), m_settings(settings), m_preconditioned(preconditioned),
         m_linearization(linearization), m_stats(stats), m_n(problem.A->rows()),
-        m_inv_diag(inverse_diagonal_blocks(*problem.A)) {}
+        m_inv_diag(inverse_diagonal_blocks(*problem.A)) {
+    if (preconditioned && settings.preconditioner == CrPreconditioner::ssor)
+      m_ssor = std::make_unique<BlockSsor>(*problem.A, m_inv_diag);
+  }
 
   void run(Eigen::VectorXd& dv);
 
@@ -53,6 +60,7 @@ class CrSolver {
   enum class Finish { converged, not_converged, go_on };
   Finish finish_or_continue();
   bool step();
+  double frozen_violation(int k, const Eigen::VectorXd& dv) const;
   bool out_of_budget() const { return m_stats.iterations + m_stats.restarts >= m_settings.max_iterations; }
 
   ContactProblem& m_problem;
@@ -62,7 +70,9 @@ class CrSolver {
   ContactSolverStats& m_stats;
   int m_n;
   std::vector<Eigen::Matrix3d> m_inv_diag;  // P_A^-1, one per node
+  std::unique_ptr<BlockSsor> m_ssor;           // P_A^-1 when settings.preconditioner == ssor
   std::vector<ContactTrack> m_tracks;
+  std::vector<Eigen::Matrix3d> m_contact_inv;  // (J_k P_A^-1 J_k^T)^-1 per contact (zero: use the diagonal)
   Eigen::VectorXd m_y, m_d, m_r, m_z, m_p, m_q, m_t, m_bz;
   double m_rho = 0.0;
   int m_since_restart = 0;
@@ -86,7 +96,11 @@ void CrSolver::start_from_warm_states() {
     if (s.mode == ContactMode::sliding) {
       s.lambda_kinetic = std::max(s.lambda_kinetic, 0.0);
       s.slip = s.slip.norm() > 0.0 ? Eigen::Vector2d(s.slip.normalized()) : Eigen::Vector2d::Zero();
+      // lambda' restarts from this step's lambda at the first converged
+      // evaluation: last step's value is a start for the iterate, not a
+      // sample (averaging it in cost several extra solves per warm step).
       reset_lambda_window(m_tracks[static_cast<size_t>(k)], s.lambda_kinetic);
+      m_tracks[static_cast<size_t>(k)].samples = 0;
     }
     if (s.mode != ContactMode::inactive) m_y[m_n + 3 * k] = s.lambda;
     if (s.mode == ContactMode::sticking) m_y.segment<2>(m_n + 3 * k + 1) = s.gamma;
@@ -105,8 +119,17 @@ void CrSolver::grow_contacts() {
 }
 
 void CrSolver::refresh_rows() {
-  for (int k = 0; k < contacts(); ++k)
-    m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(m_problem.rows[static_cast<size_t>(k)], m_inv_diag);
+  const bool blocks = m_preconditioned && m_settings.preconditioner != CrPreconditioner::block_jacobi;
+  m_contact_inv.assign(blocks ? static_cast<size_t>(contacts()) : 0, Eigen::Matrix3d::Zero());
+  for (int k = 0; k < contacts(); ++k) {
+    const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
+    m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(rows, m_inv_diag);
+    if (!blocks) continue;
+    const Eigen::Matrix3d W = contact_block(rows, m_inv_diag);
+    // Only a well-conditioned block is inverted; the diagonal serves otherwise.
+    if (W.trace() > 0.0 && W.determinant() > 1e-12 * std::pow(W.trace() / 3.0, 3))
+      m_contact_inv[static_cast<size_t>(k)] = W.inverse();
+  }
 }
 
 void CrSolver::build_rhs() {
@@ -143,21 +166,35 @@ void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   out.head(m_n) = top;
 }
 
-// C = diag(P_A, P_S) of METHOD.md section 5: P_S = diag(J P_A^-1 J^T) on
-// selected rows, 1 on the others (whose B entry is -1).
+// C = diag(P_A, P_S) of METHOD.md section 5: P_A the block diagonal of A
+// (or block SSOR), P_S = J P_A^-1 J^T on selected rows, per row or per
+// contact block (cr_solver.h), 1 on the others (whose B entry is -1). With
+// block SSOR for P_A, P_S still uses the block diagonal: J M^-1 J^T has no
+// cheap form, and the diagonal is what the scaled residual uses too.
 void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   out.resize(x.size());
   if (!m_preconditioned) {
     out = x;
     return;
   }
-  for (int i = 0; i < m_n / 3; ++i) out.segment<3>(3 * i) = m_inv_diag[static_cast<size_t>(i)] * x.segment<3>(3 * i);
-  for (int k = 0; k < contacts(); ++k)
-    for (int r = 0; r < 3; ++r) {
-      const int i = m_n + 3 * k + r;
-      const double w = row_w(k, r);
-      out[i] = row_on(k, r) && w > 0.0 ? x[i] / w : x[i];
+  if (m_ssor) {
+    Eigen::VectorXd top;
+    m_ssor->apply(x.head(m_n), top);
+    out.head(m_n) = top;
+  } else {
+    for (int i = 0; i < m_n / 3; ++i) out.segment<3>(3 * i) = m_inv_diag[static_cast<size_t>(i)] * x.segment<3>(3 * i);
+  }
+  for (int k = 0; k < contacts(); ++k) {
+    const int base = m_n + 3 * k;
+    if (tangent_on(k) && !m_contact_inv.empty() && m_contact_inv[static_cast<size_t>(k)](0, 0) != 0.0) {
+      out.segment<3>(base) = m_contact_inv[static_cast<size_t>(k)] * x.segment<3>(base);
+      continue;
     }
+    for (int r = 0; r < 3; ++r) {
+      const double w = row_w(k, r);
+      out[base + r] = row_on(k, r) && w > 0.0 ? x[base + r] / w : x[base + r];
+    }
+  }
 }
 
 // The residual as velocities (m/s): momentum rows through P_A^-1, selected
@@ -325,6 +362,24 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   return Finish::go_on;
 }
 
+// How far (m/s) an active contact's multipliers and velocity are from its
+// mode's law: a pull, a sticking impulse outside the cone, a slip running
+// backwards against the kinetic impulse.
+double CrSolver::frozen_violation(int k, const Eigen::VectorXd& dv) const {
+  const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
+  const ContactState& s = m_problem.states[static_cast<size_t>(k)];
+  const ContactTrack& track = m_tracks[static_cast<size_t>(k)];
+  const double w_t = std::max(track.w[1], track.w[2]);
+  double violation = -s.lambda * track.w[0];
+  if (s.mode == ContactMode::sticking)
+    violation = std::max(violation, (s.gamma.norm() - rows.mu_static * std::max(s.lambda, 0.0)) * w_t);
+  if (s.mode == ContactMode::sliding) {
+    const Eigen::Vector2d u = rows_times(rows, dv).tail<2>() - rows.rhs_tangent;
+    violation = std::max(violation, -u.dot(s.slip));
+  }
+  return violation;
+}
+
 void CrSolver::run(Eigen::VectorXd& dv) {
   start_from_warm_states();
   refresh_rows();
@@ -359,11 +414,11 @@ void CrSolver::run(Eigen::VectorXd& dv) {
       continue;
     }
     s.lambda = m_y[m_n + 3 * k];
-    // A contact frozen in the active state that pulls (lambda < 0) is not a
-    // solution of the complementarity problem: say so.
-    if (track.flips >= max_flips && s.lambda * track.w[0] < -m_settings.constraint_tolerance) m_stats.converged = false;
+    if (s.mode == ContactMode::sticking) s.gamma = m_y.segment<2>(m_n + 3 * k + 1);
+    // A frozen contact kept a mode its own law rejects (pulling, sticking
+    // outside the cone, sliding backwards): not a solution, say so.
+    if (track.flips >= max_flips && frozen_violation(k, dv) > m_settings.constraint_tolerance) m_stats.converged = false;
     if (s.mode == ContactMode::sticking) {
-      s.gamma = m_y.segment<2>(m_n + 3 * k + 1);
       ++m_stats.sticking;
     } else {
       s.gamma.setZero();
