@@ -62,7 +62,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
     const double excess = (norm - rows.mu_static * std::max(lambda, 0.0)) * w_t;
     // Break away only when the tangential residual does not push along gamma:
     // the step would otherwise be undone by the rows' own correction.
-    if (!frozen && (!can_stick || (excess > eps2 && u.dot(gamma) <= eps2 * norm))) {
+    if (!frozen && converged && (!can_stick || (excess > eps2 && u.dot(gamma) <= eps2 * norm))) {
       p.state.mode = ContactMode::sliding;
       p.state.slip = norm > 0.0 ? Eigen::Vector2d(-gamma / norm) : Eigen::Vector2d::Zero();
       p.state.lambda_kinetic = std::max(lambda, 0.0);
@@ -81,7 +81,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   // askew to the friction impulse until the direction has converged.
   const double speed = u.norm();
   const bool reversed = undirected ? speed <= eps2 : (u.dot(s.slip) < -eps2 && u.dot(s.slip) < -kReversal * speed);
-  if (!frozen && can_stick && reversed) {
+  if (!frozen && converged && can_stick && reversed) {
     p.state.mode = ContactMode::sticking;
     p.f.tail<2>() = -rows.mu_kinetic * s.lambda_kinetic * s.slip;
     p.state.lambda_kinetic = 0.0;

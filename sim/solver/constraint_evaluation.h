@@ -28,6 +28,12 @@
 //   as the rest of the solve and a decayed gain cannot hide a wrong
 //   direction. A rejected proposal leaves the contact's state and track as
 //   they were;
+// - sticking <-> sliding changes, like Algorithm 3, are made only at
+//   converged evaluations: decided on the half-converged gamma and u of
+//   mid-solve evaluations they cycled on stiff resting bodies (boundary
+//   contacts at the cone's rim: 200-2000 restarts, frozen contacts and
+//   kkt ~2e-4 m/s on the FEM bench); mid-solve evaluations still switch
+//   contacts on and off;
 // - kinetic -> static needs the slip to run backwards by more than
 //   acos(-kReversal) = 120 degrees off the slip direction; smaller turns are
 //   followed as direction changes.
@@ -63,12 +69,12 @@ void reset_lambda_window(ContactTrack& track, double lambda_kinetic);
 // the accepted changes to problem.states and to the multipliers in y.
 // Contacts past `max_flips` mode changes are frozen in the active state:
 // an inactive one may still activate (a penetrating contact is never left
-// off), an active one never separates and keeps its friction mode. Algorithm 3 runs
-// only when `converged` (y solves the current system): lambda' and the slip
-// direction are a fixed-point iteration over whole solves, and feeding it
-// the half-converged u of mid-solve evaluations made it chase its own tail
-// (restart cycles on random coupled problems). Returns the number of
-// contacts changed.
+// off), an active one never separates and keeps its friction mode.
+// Friction mode changes and Algorithm 3 run only when `converged` (y solves
+// the current system): lambda' and the slip direction are a fixed-point
+// iteration over whole solves, and feeding it the half-converged u of
+// mid-solve evaluations made it chase its own tail (restart cycles on
+// random coupled problems). Returns the number of contacts changed.
 int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
                          double eps2, int max_flips, bool converged);
 
