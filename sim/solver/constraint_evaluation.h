@@ -11,18 +11,18 @@
 //   impulses seen at evaluations: a short window damps the lambda <-> lambda'
 //   feedback of coupled contacts and still reaches lambda exactly in
 //   kLambdaWindow evaluations once lambda has settled;
-// - the slip direction follows the tangential velocity u with gain
-//   alpha (at most kAlphaTheta = 0.5) whenever they differ by more than
-//   kEpsTheta: moving part of the angle per evaluation converges
-//   geometrically without the sign flips a full jump causes on contacts near
-//   reversal. Strongly coupled contacts still overshoot (period-2 swings of
-//   the direction between solves), so a contact's gain halves each time an
-//   accepted turn reverses the previous one and doubles back (to at most
-//   kAlphaTheta) after kAlphaStreak = 4 accepted turns the same way (after
-//   2 it cycled: halve, double, halve on random coupled problems). The angle is measured with
-//   atan2(cross, dot), exact near 0 (cos(1e-9) is 1.0 in double, so a cosine
-//   test turned rounding noise into turns of random sign). kEpsTheta =
-//   1e-10 rad only keeps round-off out; the real threshold is epsilon_2: a
+// - the slip direction turns toward its aim, the direction of u with the
+//   contact's own kinetic impulse taken out (u + w_t mu lambda' slip: the
+//   fixed point for an isolated contact), with gain alpha (at most
+//   kAlphaTheta = 1) whenever slip and u differ by more than kEpsTheta.
+//   Strongly coupled contacts overshoot (period-2 swings of the direction
+//   between solves), so a contact's gain halves each time an accepted turn
+//   reverses the previous one and doubles back (to at most kAlphaTheta)
+//   after kAlphaStreak = 4 accepted turns the same way (after 2 it cycled:
+//   halve, double, halve on random coupled problems). The angle is measured
+//   with atan2(cross, dot), exact near 0 (cos(1e-9) is 1.0 in double, so a
+//   cosine test turned rounding noise into turns of random sign). kEpsTheta
+//   = 1e-10 rad only keeps round-off out; the real threshold is epsilon_2: a
 //   turn is accepted when the impulse change of the *full* turn to u (not
 //   of the damped step) exceeds it, so the friction impulse ends as accurate
 //   as the rest of the solve and a decayed gain cannot hide a wrong
@@ -46,7 +46,7 @@
 namespace recoil::sim {
 
 inline constexpr int kLambdaWindow = 3;
-inline constexpr double kAlphaTheta = 0.5;
+inline constexpr double kAlphaTheta = 1.0;
 inline constexpr double kEpsTheta = 1e-10;  // rad
 inline constexpr double kReversal = 0.5;
 inline constexpr int kAlphaStreak = 4;
