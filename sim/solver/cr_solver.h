@@ -11,26 +11,24 @@
 // The preconditioner (issue #5; `recoil_bench solver_fem`: a tetrahedralized
 // 0.5 m cube, rho 1000, h = 1/60 s, 1029 and 3993 DoF, 49 and 121 bottom
 // contacts, E 1e5..1e7, sliding at 0.2 m/s or resting; tolerance 1e-6 m/s,
-// cold start; ratios below are cr_plain / cr iterations and time ratios):
+// cold start; times on the shared 2-core machine, +-30% noise):
 // - block Jacobi (P_A = 3x3 diagonal blocks, P_S = diag(J P_A^-1 J^T)), the
-//   default: 1.9-6.1x fewer iterations than cr_plain when sliding (the gain
-//   grows with E), 2.4-17x when resting except one (E 1e5, 3993 DoF,
-//   resting: 0.56x, more restarts than cr_plain). What it removes is the
-//   spread of the diagonal (mass + h^2 stiffness per node); what it leaves
-//   is the spectrum of D^-1 A itself (h^2 E / (rho dx^2) ~ 10^2..10^4 here)
-//   and the restarts: every accepted change of the active set or friction
-//   state throws the Krylov space away (40-65 per sliding solve, 200-900 for
-//   stiff resting bodies whose boundary contacts hover at the cone's rim),
+//   default: 2.1-6.6x fewer iterations than cr_plain when sliding, 1.9-15.6x
+//   when resting (the gain grows with E), 1.4-14x less time; 3.9-11.7x
+//   faster than pgs at 3993 DoF. What it removes is the spread of the
+//   diagonal (mass + h^2 stiffness per node); what it leaves is the
+//   spectrum of D^-1 A itself (h^2 E / (rho dx^2) ~ 10^2..10^4 here) and the
+//   restarts: every accepted change of the active set or friction state
+//   throws the Krylov space away (41-55 per sliding solve, 24-461 resting),
 //   and each restart pays the ~sqrt(condition) iterations again. No P_A
-//   fixes the second part; fewer state changes would.
+//   fixes that part; fewer state changes would.
 // - contact_blocks (P_S = each contact's 3x3 block J_k P_A^-1 J_k^T on its
 //   selected rows): identical when every contact slides (one selected row);
-//   when resting 0.65-0.92x the time of block Jacobi in five of six
-//   problems but 8x in one (E 1e7, 1029 DoF: 9120 restarts), so not the
-//   default.
-// - ssor (block SSOR, omega 1.5, for P_A): 1.4-1.8x fewer iterations than
+//   resting, 0.87-0.92x the iterations of block Jacobi but more restarts in
+//   four of six problems, 0.95-1.5x the time, so not the default.
+// - ssor (block SSOR, omega 1.5, for P_A): 1.4-1.6x fewer iterations than
 //   block Jacobi when sliding, but each application costs about one product
-//   with A: 0.6-1.25x the time sliding, 1.3-16x resting (more restarts). It
+//   with A: 0.8-1.3x the time sliding, 1.2-11.5x resting (more restarts). It
 //   does not pay for itself, so it is not the default.
 #include <Eigen/Core>
 
