@@ -11,15 +11,29 @@
 //   impulses seen at evaluations: a short window damps the lambda <-> lambda'
 //   feedback of coupled contacts and still reaches lambda exactly in
 //   kLambdaWindow evaluations once lambda has settled;
-// - the slip direction follows the tangential velocity u with gain
-//   kAlphaTheta = 0.5 whenever they differ by more than kEpsTheta: halving
-//   the angle per evaluation converges geometrically without the sign flips
-//   a full jump causes on contacts near reversal. Strongly coupled contacts
-//   still overshoot (period-2 swings of the direction between solves), so a
-//   contact's gain halves each time its turn reverses sign. kEpsTheta is tiny (1e-9
-//   rad) because the real threshold is epsilon_2: a turn is kept only when
-//   the impulse change it causes exceeds epsilon_2, so the direction is as
-//   accurate as the rest of the solve;
+// - the slip direction turns toward its aim, the direction of u with the
+//   contact's own kinetic impulse taken out (u + w_t mu lambda' slip: the
+//   fixed point for an isolated contact), with gain alpha (at most
+//   kAlphaTheta = 1) whenever slip and u differ by more than kEpsTheta.
+//   Strongly coupled contacts overshoot (period-2 swings of the direction
+//   between solves), so a contact's gain halves each time an accepted turn
+//   reverses the previous one and doubles back (to at most kAlphaTheta)
+//   after kAlphaStreak = 4 accepted turns the same way (after 2 it cycled:
+//   halve, double, halve on random coupled problems). The angle is measured
+//   with atan2(cross, dot), exact near 0 (cos(1e-9) is 1.0 in double, so a
+//   cosine test turned rounding noise into turns of random sign). kEpsTheta
+//   = 1e-10 rad only keeps round-off out; the real threshold is epsilon_2: a
+//   turn is accepted when the impulse change of the *full* turn to u (not
+//   of the damped step) exceeds it, so the friction impulse ends as accurate
+//   as the rest of the solve and a decayed gain cannot hide a wrong
+//   direction. A rejected proposal leaves the contact's state and track as
+//   they were;
+// - sticking <-> sliding changes, like Algorithm 3, are made only at
+//   converged evaluations: decided on the half-converged gamma and u of
+//   mid-solve evaluations they cycled on stiff resting bodies (boundary
+//   contacts at the cone's rim: 200-2000 restarts, frozen contacts and
+//   kkt ~2e-4 m/s on the FEM bench); mid-solve evaluations still switch
+//   contacts on and off;
 // - kinetic -> static needs the slip to run backwards by more than
 //   acos(-kReversal) = 120 degrees off the slip direction; smaller turns are
 //   followed as direction changes.
@@ -32,9 +46,10 @@
 namespace recoil::sim {
 
 inline constexpr int kLambdaWindow = 3;
-inline constexpr double kAlphaTheta = 0.5;
-inline constexpr double kEpsTheta = 1e-9;  // rad
+inline constexpr double kAlphaTheta = 1.0;
+inline constexpr double kEpsTheta = 1e-10;  // rad
 inline constexpr double kReversal = 0.5;
+inline constexpr int kAlphaStreak = 4;
 
 // Solver-side bookkeeping of one contact, beside its ContactState.
 struct ContactTrack {
@@ -44,6 +59,7 @@ struct ContactTrack {
   int flips = 0;                                // mode changes in this solve
   double alpha = kAlphaTheta;                   // direction gain, halved at each overshoot
   int last_turn = 0;                            // sign of the last direction turn (+1 counter-clockwise)
+  int streak = 0;                               // accepted turns the same way since alpha last changed
 };
 
 // Starts the moving average of a sliding contact at `lambda_kinetic`.
@@ -51,12 +67,14 @@ void reset_lambda_window(ContactTrack& track, double lambda_kinetic);
 
 // Evaluates every contact of `problem` at y (#DoF + 3 #contacts); applies
 // the accepted changes to problem.states and to the multipliers in y.
-// Contacts past `max_flips` mode changes keep their mode. Algorithm 3 runs
-// only when `converged` (y solves the current system): lambda' and the slip
-// direction are a fixed-point iteration over whole solves, and feeding it
-// the half-converged u of mid-solve evaluations made it chase its own tail
-// (restart cycles on random coupled problems). Returns the number of
-// contacts changed.
+// Contacts past `max_flips` mode changes are frozen in the active state:
+// an inactive one may still activate (a penetrating contact is never left
+// off), an active one never separates and keeps its friction mode.
+// Friction mode changes and Algorithm 3 run only when `converged` (y solves
+// the current system): lambda' and the slip direction are a fixed-point
+// iteration over whole solves, and feeding it the half-converged u of
+// mid-solve evaluations made it chase its own tail (restart cycles on
+// random coupled problems). Returns the number of contacts changed.
 int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
                          double eps2, int max_flips, bool converged);
 

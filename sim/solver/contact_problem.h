@@ -61,6 +61,13 @@ struct ContactProblem {
 enum class SolverMethod { cr, cr_plain, pgs };
 const char* to_string(SolverMethod method);
 
+// C = diag(P_A, P_S) for `cr`: block_jacobi = 3x3 diagonal blocks of A and
+// diag(J P_A^-1 J^T); contact_blocks = the same P_A with each contact's 3x3
+// block J_k P_A^-1 J_k^T on its selected rows; ssor = block SSOR
+// (omega 1.5) for P_A with the contact blocks. Measurements in cr_solver.h.
+enum class CrPreconditioner { block_jacobi, contact_blocks, ssor };
+const char* to_string(CrPreconditioner preconditioner);
+
 struct ContactSolverSettings {
   SolverMethod method = SolverMethod::cr;
   double tolerance = 1e-6;   // epsilon_1 on the (preconditioned) residual; cr/cr_plain: the 2-norm of
@@ -72,6 +79,8 @@ struct ContactSolverSettings {
   double constraint_tolerance = 1e-6;  // epsilon_2, m/s: smallest accepted change of a contact, and
                                        // the bound on each constraint row's residual at convergence
   int max_relinearizations = 16;       // relinearize calls per solve
+  // Added with issue #5: the preconditioner of `cr` (cr_plain is always C = I); see cr_solver.h.
+  CrPreconditioner preconditioner = CrPreconditioner::block_jacobi;
 };
 
 struct ContactSolverStats {
@@ -87,6 +96,8 @@ struct ContactSolverStats {
   double ms = 0.0;             // wall-clock
   // Added with the solvers: the common accuracy measure (sim/solver/kkt_residual.h), m/s.
   double kkt = 0.0;
+  // Added with issue #5: contacts that reached max_flips (frozen in the active state; cr only).
+  int frozen = 0;
 };
 
 // What the solver calls back, once converged, for Algorithm 1's outer loop:

@@ -37,6 +37,13 @@ Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const std::vecto
   return w;
 }
 
+Eigen::Matrix3d contact_block(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag) {
+  Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
+  for (size_t i = 0; i < rows.nodes.size(); ++i)
+    W.noalias() += rows.blocks[i] * inv_diag[static_cast<size_t>(rows.nodes[i])] * rows.blocks[i].transpose();
+  return W;
+}
+
 Eigen::Vector2d tangent_impulse(const ContactRows& rows, const ContactState& state) {
   switch (state.mode) {
     case ContactMode::sticking: return state.gamma;

@@ -23,6 +23,10 @@ std::vector<Eigen::Matrix3d> inverse_diagonal_blocks(const BlockSparseMatrix& A)
 // touches no free DoF gets 0.
 Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag);
 
+// J_k P_A^-1 J_k^T: the contact's 3x3 block of the Delassus operator with
+// A replaced by its block diagonal, 1/kg (its diagonal is effective_inverse_mass).
+Eigen::Matrix3d contact_block(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag);
+
 // The friction impulse (t1, t2) that `state` applies: gamma when sticking,
 // -mu_kinetic lambda' slip when sliding, 0 when inactive.
 Eigen::Vector2d tangent_impulse(const ContactRows& rows, const ContactState& state);

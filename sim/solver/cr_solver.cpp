@@ -3,7 +3,11 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/LU>
+#include <memory>
+
 #include "core/check.h"
+#include "sim/solver/block_ssor.h"
 #include "sim/solver/constraint_evaluation.h"
 #include "sim/solver/contact_rows_ops.h"
 
@@ -13,6 +17,13 @@ namespace {
 
 // Below this |z^T B z| / (|z| |B z|) the CR recurrence has broken down.
 constexpr double kBreakdown = 1e-12;
+// Algorithm 1 line 21 stops when |B C^-1 r| < epsilon_1: r then lies in the
+// (near) null space of B and no Krylov step can reduce it (redundant rows
+// with right-hand sides consistent only to round-off). Alone, that test
+// would also stop an ill-conditioned but regular system whose residual sits
+// in a slow eigen-direction (|B C^-1 r| ~ lambda_min |r|, lambda_min ~ 1e-3
+// for stiff FEM), so it must also be this small relative to |r|.
+constexpr double kStationary = 1e-6;
 
 class CrSolver {
  public:
@@ -20,7 +31,10 @@ class CrSolver {
            ContactLinearization* linearization, ContactSolverStats& stats)
       : m_problem(problem), m_settings(settings), m_preconditioned(preconditioned),
         m_linearization(linearization), m_stats(stats), m_n(problem.A->rows()),
-        m_inv_diag(inverse_diagonal_blocks(*problem.A)) {}
+        m_inv_diag(inverse_diagonal_blocks(*problem.A)) {
+    if (preconditioned && settings.preconditioner == CrPreconditioner::ssor)
+      m_ssor = std::make_unique<BlockSsor>(*problem.A, m_inv_diag);
+  }
 
   void run(Eigen::VectorXd& dv);
 
@@ -38,11 +52,15 @@ class CrSolver {
   void apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   void apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   double scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const;
+  void recompute_residual();
+  void update_stationary();
   void restart_true();
   void restart_recurrence();
   void rescue_step();
-  bool finish_or_continue();
+  enum class Finish { converged, not_converged, go_on };
+  Finish finish_or_continue();
   bool step();
+  double frozen_violation(int k, const Eigen::VectorXd& dv) const;
   bool out_of_budget() const { return m_stats.iterations + m_stats.restarts >= m_settings.max_iterations; }
 
   ContactProblem& m_problem;
@@ -52,11 +70,15 @@ class CrSolver {
   ContactSolverStats& m_stats;
   int m_n;
   std::vector<Eigen::Matrix3d> m_inv_diag;  // P_A^-1, one per node
+  std::unique_ptr<BlockSsor> m_ssor;           // P_A^-1 when settings.preconditioner == ssor
   std::vector<ContactTrack> m_tracks;
+  std::vector<Eigen::Matrix3d> m_contact_inv;  // (J_k P_A^-1 J_k^T)^-1 per contact (zero: use the diagonal)
   Eigen::VectorXd m_y, m_d, m_r, m_z, m_p, m_q, m_t, m_bz;
   double m_rho = 0.0;
   int m_since_restart = 0;
   bool m_residual_true = false;
+  bool m_stationary = false;       // scaled |B C^-1 r| < epsilon_1 (Algorithm 1 line 21)
+  bool m_relinearized_ok = false;  // the last relinearize moved nothing beyond epsilon_2, and nothing changed since
 };
 
 void CrSolver::start_from_warm_states() {
@@ -74,7 +96,11 @@ void CrSolver::start_from_warm_states() {
     if (s.mode == ContactMode::sliding) {
       s.lambda_kinetic = std::max(s.lambda_kinetic, 0.0);
       s.slip = s.slip.norm() > 0.0 ? Eigen::Vector2d(s.slip.normalized()) : Eigen::Vector2d::Zero();
+      // lambda' restarts from this step's lambda at the first converged
+      // evaluation: last step's value is a start for the iterate, not a
+      // sample (averaging it in cost several extra solves per warm step).
       reset_lambda_window(m_tracks[static_cast<size_t>(k)], s.lambda_kinetic);
+      m_tracks[static_cast<size_t>(k)].samples = 0;
     }
     if (s.mode != ContactMode::inactive) m_y[m_n + 3 * k] = s.lambda;
     if (s.mode == ContactMode::sticking) m_y.segment<2>(m_n + 3 * k + 1) = s.gamma;
@@ -93,8 +119,17 @@ void CrSolver::grow_contacts() {
 }
 
 void CrSolver::refresh_rows() {
-  for (int k = 0; k < contacts(); ++k)
-    m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(m_problem.rows[static_cast<size_t>(k)], m_inv_diag);
+  const bool blocks = m_preconditioned && m_settings.preconditioner != CrPreconditioner::block_jacobi;
+  m_contact_inv.assign(blocks ? static_cast<size_t>(contacts()) : 0, Eigen::Matrix3d::Zero());
+  for (int k = 0; k < contacts(); ++k) {
+    const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
+    m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(rows, m_inv_diag);
+    if (!blocks) continue;
+    const Eigen::Matrix3d W = contact_block(rows, m_inv_diag);
+    // Only a well-conditioned block is inverted; the diagonal serves otherwise.
+    if (W.trace() > 0.0 && W.determinant() > 1e-12 * std::pow(W.trace() / 3.0, 3))
+      m_contact_inv[static_cast<size_t>(k)] = W.inverse();
+  }
 }
 
 void CrSolver::build_rhs() {
@@ -131,21 +166,35 @@ void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   out.head(m_n) = top;
 }
 
-// C = diag(P_A, P_S) of METHOD.md section 5: P_S = diag(J P_A^-1 J^T) on
-// selected rows, 1 on the others (whose B entry is -1).
+// C = diag(P_A, P_S) of METHOD.md section 5: P_A the block diagonal of A
+// (or block SSOR), P_S = J P_A^-1 J^T on selected rows, per row or per
+// contact block (cr_solver.h), 1 on the others (whose B entry is -1). With
+// block SSOR for P_A, P_S still uses the block diagonal: J M^-1 J^T has no
+// cheap form, and the diagonal is what the scaled residual uses too.
 void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   out.resize(x.size());
   if (!m_preconditioned) {
     out = x;
     return;
   }
-  for (int i = 0; i < m_n / 3; ++i) out.segment<3>(3 * i) = m_inv_diag[static_cast<size_t>(i)] * x.segment<3>(3 * i);
-  for (int k = 0; k < contacts(); ++k)
-    for (int r = 0; r < 3; ++r) {
-      const int i = m_n + 3 * k + r;
-      const double w = row_w(k, r);
-      out[i] = row_on(k, r) && w > 0.0 ? x[i] / w : x[i];
+  if (m_ssor) {
+    Eigen::VectorXd top;
+    m_ssor->apply(x.head(m_n), top);
+    out.head(m_n) = top;
+  } else {
+    for (int i = 0; i < m_n / 3; ++i) out.segment<3>(3 * i) = m_inv_diag[static_cast<size_t>(i)] * x.segment<3>(3 * i);
+  }
+  for (int k = 0; k < contacts(); ++k) {
+    const int base = m_n + 3 * k;
+    if (tangent_on(k) && !m_contact_inv.empty() && m_contact_inv[static_cast<size_t>(k)](0, 0) != 0.0) {
+      out.segment<3>(base) = m_contact_inv[static_cast<size_t>(k)] * x.segment<3>(base);
+      continue;
     }
+    for (int r = 0; r < 3; ++r) {
+      const double w = row_w(k, r);
+      out[base + r] = row_on(k, r) && w > 0.0 ? x[base + r] / w : x[base + r];
+    }
+  }
 }
 
 // The residual as velocities (m/s): momentum rows through P_A^-1, selected
@@ -166,11 +215,22 @@ double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) c
   return std::sqrt(sum);
 }
 
-// Restart from the explicitly recomputed residual r = d - B y.
-void CrSolver::restart_true() {
+// r = d - B y, explicitly; y is left as it is.
+void CrSolver::recompute_residual() {
   apply_B(m_y, m_r);
   m_r = m_d - m_r;
   m_residual_true = true;
+}
+
+void CrSolver::update_stationary() {
+  double constraint_inf = 0.0;
+  const double bcr = scaled_norm(m_bz, constraint_inf);
+  m_stationary = bcr < m_settings.tolerance && bcr < kStationary * scaled_norm(m_r, constraint_inf);
+}
+
+// Restart from the explicitly recomputed residual.
+void CrSolver::restart_true() {
+  recompute_residual();
   restart_recurrence();
 }
 
@@ -181,6 +241,7 @@ void CrSolver::restart_recurrence() {
   m_q = m_bz;
   m_rho = m_z.dot(m_bz);
   m_since_restart = 0;
+  update_stationary();
   double constraint_inf = 0.0;
   if (std::abs(m_rho) <= kBreakdown * m_z.norm() * m_bz.norm() && scaled_norm(m_r, constraint_inf) >= m_settings.tolerance)
     rescue_step();
@@ -206,6 +267,7 @@ void CrSolver::rescue_step() {
   apply_B(m_z, m_bz);
   m_q = m_bz;
   m_rho = m_z.dot(m_bz);
+  update_stationary();
 }
 
 // One CR iteration (Algorithm 1 lines 9-21). Returns false when it had to
@@ -239,6 +301,7 @@ bool CrSolver::step() {
     }
   }
   apply_B(m_z, m_bz);
+  update_stationary();
   const double rho = m_z.dot(m_bz);
   if (std::abs(rho) <= kBreakdown * m_z.norm() * m_bz.norm()) {
     ++m_stats.restarts;
@@ -252,44 +315,69 @@ bool CrSolver::step() {
   return true;
 }
 
-// Algorithm 1 lines 22-31 once the residual is below epsilon_1: re-check on
-// the true residual, evaluate every constraint, look for new contacts,
-// re-linearise. Returns true when the solve is done.
-bool CrSolver::finish_or_continue() {
+// Algorithm 1 lines 22-31 once the residual is below epsilon_1 (or
+// stationary): re-check on the true residual, evaluate every constraint,
+// look for new contacts, re-linearise. Done only when a re-linearisation
+// moved nothing beyond epsilon_2 and the system it left was solved without
+// any further change; at the re-linearisation cap the solve ends unconverged.
+CrSolver::Finish CrSolver::finish_or_continue() {
   if (!m_residual_true) {
     ++m_stats.restarts;
     restart_true();
-    return false;
+    return Finish::go_on;
   }
   const double eps2 = m_settings.constraint_tolerance;
   if (evaluate_constraints(m_problem, m_tracks, m_y, eps2, m_settings.max_flips, true) > 0) {
+    m_relinearized_ok = false;
     ++m_stats.restarts;
     build_rhs();
     restart_true();
-    return false;
+    return Finish::go_on;
   }
-  if (m_linearization == nullptr) return true;
+  if (m_linearization == nullptr) return Finish::converged;
   const Eigen::VectorXd dv = m_y.head(m_n);
   const int added = m_linearization->add_new_contacts(dv, m_problem);
   if (added > 0) {
+    m_relinearized_ok = false;
     m_stats.new_contacts += added;
     grow_contacts();
     refresh_rows();
     ++m_stats.restarts;
     build_rhs();
     restart_true();
-    return false;
+    return Finish::go_on;
   }
-  if (m_stats.relinearizations >= m_settings.max_relinearizations) return true;
+  if (m_relinearized_ok) return Finish::converged;
+  if (m_stats.relinearizations >= m_settings.max_relinearizations) return Finish::not_converged;
   const double change = m_linearization->relinearize(dv, m_problem);
   ++m_stats.relinearizations;
   RECOIL_CHECK(m_problem.rows.size() == m_tracks.size(), "relinearize must not add contacts");
+  m_relinearized_ok = change <= eps2;
+  // The normals and tangents may have turned even when the right-hand sides
+  // barely moved: solve again on the recomputed residual before returning.
   refresh_rows();
   build_rhs();
-  restart_true();
-  if (change <= eps2) return true;
   ++m_stats.restarts;
-  return false;
+  restart_true();
+  return Finish::go_on;
+}
+
+// How far (m/s) an active contact's multipliers and velocity are from its
+// mode's law: a pull, a sticking impulse outside the cone, a slip running
+// backwards against the kinetic impulse.
+double CrSolver::frozen_violation(int k, const Eigen::VectorXd& dv) const {
+  const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
+  const ContactState& s = m_problem.states[static_cast<size_t>(k)];
+  const ContactTrack& track = m_tracks[static_cast<size_t>(k)];
+  const double w_t = std::max(track.w[1], track.w[2]);
+  double violation = -s.lambda * track.w[0];
+  if (s.mode == ContactMode::sticking)
+    violation = std::max(violation, (s.gamma.norm() - rows.mu_static * std::max(s.lambda, 0.0)) * w_t);
+  if (s.mode == ContactMode::sliding) {
+    const Eigen::Vector2d u = rows_times(rows, dv).tail<2>() - rows.rhs_tangent;
+    violation = std::max(violation, -u.dot(s.slip));
+  }
+  return violation;
 }
 
 void CrSolver::run(Eigen::VectorXd& dv) {
@@ -301,29 +389,36 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   while (!out_of_budget()) {
     double constraint_inf = 0.0;
     const double res = scaled_norm(m_r, constraint_inf);
-    if (res < m_settings.tolerance && (!m_residual_true || constraint_inf < m_settings.constraint_tolerance)) {
-      if (finish_or_continue()) {
-        m_stats.converged = true;
-        break;
-      }
-      continue;
+    const bool small = res < m_settings.tolerance && (!m_residual_true || constraint_inf < m_settings.constraint_tolerance);
+    if (small || m_stationary) {
+      const Finish finish = finish_or_continue();
+      if (finish == Finish::go_on) continue;
+      m_stats.converged = finish == Finish::converged;
+      break;
     }
     step();
   }
-  // Hand back what the iterate says, converged or not.
-  dv = m_y.head(m_n);
+  // Hand back what the iterate says, converged or not: dv, the multipliers
+  // and the residual all describe the same y (no step after this point).
+  if (!m_residual_true) recompute_residual();
   double constraint_inf = 0.0;
-  if (!m_residual_true) restart_true();
   m_stats.residual = scaled_norm(m_r, constraint_inf);
+  dv = m_y.head(m_n);
+  const int max_flips = m_settings.max_flips;
   for (int k = 0; k < contacts(); ++k) {
     ContactState& s = m_problem.states[static_cast<size_t>(k)];
+    const ContactTrack& track = m_tracks[static_cast<size_t>(k)];
+    if (track.flips >= max_flips) ++m_stats.frozen;
     if (s.mode == ContactMode::inactive) {
       s = ContactState{};
       continue;
     }
     s.lambda = m_y[m_n + 3 * k];
+    if (s.mode == ContactMode::sticking) s.gamma = m_y.segment<2>(m_n + 3 * k + 1);
+    // A frozen contact kept a mode its own law rejects (pulling, sticking
+    // outside the cone, sliding backwards): not a solution, say so.
+    if (track.flips >= max_flips && frozen_violation(k, dv) > m_settings.constraint_tolerance) m_stats.converged = false;
     if (s.mode == ContactMode::sticking) {
-      s.gamma = m_y.segment<2>(m_n + 3 * k + 1);
       ++m_stats.sticking;
     } else {
       s.gamma.setZero();

@@ -136,6 +136,7 @@ void PgsSolver::run(Eigen::VectorXd& dv) {
   }
   build_operator();
   m_stats.converged = false;
+  bool relinearized_ok = false;
   while (m_stats.iterations < m_settings.max_iterations) {
     const double change = sweep();
     ++m_stats.iterations;
@@ -147,6 +148,7 @@ void PgsSolver::run(Eigen::VectorXd& dv) {
     }
     const int added = m_linearization->add_new_contacts(dv, m_problem);
     if (added > 0) {
+      relinearized_ok = false;
       m_stats.new_contacts += added;
       m_f.conservativeResize(3 * contacts());
       m_f.tail(3 * added).setZero();
@@ -154,17 +156,17 @@ void PgsSolver::run(Eigen::VectorXd& dv) {
       build_operator();
       continue;
     }
-    if (m_stats.relinearizations >= m_settings.max_relinearizations) {
+    // Done once a re-linearisation moved nothing beyond epsilon_2 and the
+    // sweeps on its rows (whose normals may have turned) settled again.
+    if (relinearized_ok) {
       m_stats.converged = true;
       break;
     }
+    if (m_stats.relinearizations >= m_settings.max_relinearizations) break;  // not converged
     const double moved = m_linearization->relinearize(dv, m_problem);
     ++m_stats.relinearizations;
+    relinearized_ok = moved <= m_settings.constraint_tolerance;
     build_operator();
-    if (moved <= m_settings.constraint_tolerance) {
-      m_stats.converged = true;
-      break;
-    }
   }
   dv = m_dv_free + m_G * m_f;
   m_stats.residual = 0.0;

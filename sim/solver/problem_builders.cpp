@@ -133,4 +133,36 @@ OwnedProblem lattice_on_ground(int nx, int ny, int nz, double mass, double mass_
   return out;
 }
 
+OwnedProblem rigid_box_on_ground(const Eigen::Vector3d& size, double mass, double yaw, double g, double h,
+                                 const Eigen::Vector3d& velocity, double mu_static, double mu_kinetic) {
+  OwnedProblem out;
+  out.A = std::make_unique<BlockSparseMatrix>(2, std::vector<std::pair<int, int>>{});
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Vector3d sq = size.cwiseProduct(size);
+  const Eigen::Vector3d body_inertia = mass / 12.0 * Eigen::Vector3d(sq.y() + sq.z(), sq.x() + sq.z(), sq.x() + sq.y());
+  out.A->block(out.A->find(0, 0)) = mass * Eigen::Matrix3d::Identity();
+  out.A->block(out.A->find(1, 1)) = R * body_inertia.asDiagonal() * R.transpose();
+  out.problem.A = out.A.get();
+  out.problem.b = Eigen::VectorXd::Zero(6);
+  out.problem.b[2] = -h * mass * g;
+  const Eigen::Matrix3d F = contact_frame(Eigen::Vector3d::UnitZ());
+  for (int corner = 0; corner < 4; ++corner) {
+    const Eigen::Vector3d local(corner & 1 ? 0.5 * size.x() : -0.5 * size.x(),
+                                corner & 2 ? 0.5 * size.y() : -0.5 * size.y(), -0.5 * size.z());
+    const Eigen::Vector3d r = R * local;
+    Eigen::Matrix3d cross;
+    cross << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
+    ContactRows rows;
+    rows.nodes = {0, 1};
+    rows.blocks = {F, -F * cross};
+    rows.rhs_normal = -velocity.z();
+    rows.rhs_tangent = -(F.bottomRows<2>() * velocity);
+    rows.mu_static = mu_static;
+    rows.mu_kinetic = mu_kinetic;
+    out.problem.rows.push_back(rows);
+    out.problem.states.emplace_back();
+  }
+  return out;
+}
+
 }  // namespace recoil::sim

@@ -46,4 +46,16 @@ OwnedProblem particle_on_incline(double mass, double theta, double g, double h, 
 OwnedProblem lattice_on_ground(int nx, int ny, int nz, double mass, double mass_ratio, double stiffness, double h,
                                double mu, double drift, std::mt19937& rng);
 
+// A rigid box (full size `size`, mass `mass`, uniform density) standing on
+// the ground z = 0 on its four bottom corners, turned by `yaw` (rad) about
+// z so that its world inertia tensor is not diagonal. DoF: node 0 the
+// linear velocity (A block m I), node 1 the angular velocity (A block the
+// world inertia tensor). Contact k at corner r_k (from the centre of mass)
+// reads the corner velocity v + w x r_k = v - [r_k]_x w, so its blocks are
+// F and -F [r_k]_x with F the ground frame. 12 rows on 6 DoF: B is
+// singular, but consistent. The box moves with velocity `velocity` (m/s,
+// horizontal) at the start of the step; gravity g over a step h.
+OwnedProblem rigid_box_on_ground(const Eigen::Vector3d& size, double mass, double yaw, double g, double h,
+                                 const Eigen::Vector3d& velocity, double mu_static, double mu_kinetic);
+
 }  // namespace recoil::sim

@@ -19,6 +19,15 @@ const char* to_string(SolverMethod method) {
   return "unknown";
 }
 
+const char* to_string(CrPreconditioner preconditioner) {
+  switch (preconditioner) {
+    case CrPreconditioner::block_jacobi: return "block_jacobi";
+    case CrPreconditioner::contact_blocks: return "contact_blocks";
+    case CrPreconditioner::ssor: return "ssor";
+  }
+  return "unknown";
+}
+
 ContactSolverStats solve_contacts(ContactProblem& problem, const ContactSolverSettings& settings,
                                   Eigen::VectorXd& dv, ContactLinearization* linearization) {
   RECOIL_CHECK(problem.A != nullptr);

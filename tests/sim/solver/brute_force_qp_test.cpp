@@ -55,6 +55,7 @@ TEST(SolverBruteForce, RandomFrictionlessQpsMatchEnumeration) {
       for (size_t k = 0; k < solution.states.size(); ++k)
         err = std::max(err, std::abs(solution.states[k].lambda - reference->lambda[static_cast<Eigen::Index>(k)]));
       EXPECT_LT(err, 1e-6) << to_string(method) << " trial " << trial << " contacts " << owned.problem.rows.size();
+      EXPECT_LT(solution.stats.kkt, 1e-8) << to_string(method) << " trial " << trial;
       worst[static_cast<int>(method)] = std::max(worst[static_cast<int>(method)], err);
     }
   }

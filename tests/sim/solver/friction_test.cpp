@@ -38,6 +38,7 @@ TEST(SolverFriction, ParticleSticksBelowFrictionAngle) {
     std::cout << to_string(method) << ": sticking on 20 deg, mu 0.5: |dv| = " << creep << " m/s, iterations "
               << s.stats.iterations << "\n";
     EXPECT_LT(creep, 1e-9) << to_string(method);
+    EXPECT_LT(s.stats.kkt, 1e-9) << to_string(method);
     EXPECT_EQ(s.states[0].mode, ContactMode::sticking) << to_string(method);
     EXPECT_NEAR(s.states[0].lambda, kH * kMass * kG * std::cos(theta), 1e-9);
     EXPECT_NEAR(s.states[0].gamma[0], kH * kMass * kG * std::sin(theta), 1e-9);  // up the slope
@@ -58,6 +59,7 @@ TEST(SolverFriction, ParticleSlidesWithCoulombAcceleration) {
     std::cout << to_string(method) << ": sliding on 30 deg, mu 0.3: a = " << acceleration << " m/s^2, expected "
               << expected << ", relative error " << rel << "\n";
     EXPECT_LT(rel, 1e-6) << to_string(method);
+    EXPECT_LT(s.stats.kkt, 1e-9) << to_string(method);
     EXPECT_NEAR(v[1], 0.0, 1e-9);
     EXPECT_EQ(s.states[0].mode, ContactMode::sliding) << to_string(method);
   }
@@ -74,6 +76,7 @@ TEST(SolverFriction, KineticFrictionRemovesMuGHPerStepOrStops) {
       const double expected = std::max(0.0, v0 - mu * kG * kH);
       std::cout << to_string(method) << ": v0 " << v0 << " -> " << v[0] << " m/s, expected " << expected << "\n";
       EXPECT_NEAR(v[0], expected, 1e-8) << to_string(method) << " v0 " << v0;
+      EXPECT_LT(s.stats.kkt, 1e-9) << to_string(method) << " v0 " << v0;
       EXPECT_NEAR(v[1], 0.0, 1e-9);
     }
   }

@@ -68,6 +68,7 @@ TEST(SolverLinearization, NewContactsAndRelinearizationAreHonoured) {
     EXPECT_NEAR(dv[5], 0.0, 1e-9) << to_string(method) << ": the new contact holds particle 1";
     EXPECT_NEAR(owned.problem.states[1].lambda, kH * 3.0 * kG, 1e-9) << to_string(method);
     EXPECT_EQ(stats.active, 2) << to_string(method);
+    EXPECT_LT(stats.kkt, 1e-9) << to_string(method);
   }
 }
 

@@ -1,0 +1,154 @@
+// Exits and safeguards of the solvers (issue #5, items 2, 3, 4 and 6):
+// re-linearisation that turns the rows is solved for, the re-linearisation
+// cap reports non-convergence, max_flips never leaves a contact
+// penetrating, and a residual stuck on an inconsistent singular system
+// stops early (|B C^-1 r| < epsilon_1) instead of burning the budget.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+#include "sim/solver/kkt_residual.h"
+#include "sim/solver/problem_builders.h"
+#include "tests/sim/solver/solver_test_support.h"
+
+namespace recoil::sim {
+namespace {
+
+constexpr double kH = 1.0 / 60.0;
+constexpr double kG = 9.81;
+const SolverMethod kMethods[] = {SolverMethod::cr, SolverMethod::cr_plain, SolverMethod::pgs};
+
+// Re-linearisation that tilts the contact normal by 20 degrees about x
+// (as a contact sliding onto a slope would) while its right-hand side stays
+// zero: the reported change is 0, yet the rows did change.
+class TiltingLinearization : public ContactLinearization {
+ public:
+  int calls = 0;
+  int add_new_contacts(const Eigen::VectorXd&, ContactProblem&) override { return 0; }
+  double relinearize(const Eigen::VectorXd&, ContactProblem& problem) override {
+    if (calls++ == 0) {
+      const double theta = 20.0 * M_PI / 180.0;
+      problem.rows[0].blocks[0] = contact_frame(Eigen::Vector3d(0.0, -std::sin(theta), std::cos(theta)));
+    }
+    return 0.0;
+  }
+};
+
+// Re-linearisation that never settles: every call moves the normal rhs.
+class RestlessLinearization : public ContactLinearization {
+ public:
+  int add_new_contacts(const Eigen::VectorXd&, ContactProblem&) override { return 0; }
+  double relinearize(const Eigen::VectorXd&, ContactProblem& problem) override {
+    problem.rows[0].rhs_normal += 0.01;
+    return 0.01;
+  }
+};
+
+OwnedProblem resting_particle(double mu) {
+  return particle_on_incline(1.0, 0.0, kG, kH, Eigen::Vector2d::Zero(), mu, mu);
+}
+
+TEST(SolverRobustness, TurnedRowsAreSolvedAfterRelinearization) {
+  for (SolverMethod method : kMethods) {
+    OwnedProblem owned = resting_particle(0.0);
+    TiltingLinearization tilt;
+    Eigen::VectorXd dv;
+    const auto stats = solve_contacts(owned.problem, solver_test::tight(method), dv, &tilt);
+    // Frictionless on the tilted plane: slides down it with g sin(theta) h.
+    const double theta = 20.0 * M_PI / 180.0;
+    const Eigen::Vector3d up_slope(0.0, std::cos(theta), std::sin(theta));
+    const double along = -dv.dot(up_slope);
+    std::cout << to_string(method) << ": after a tilting relinearization, speed down the slope " << along
+              << " m/s (expected " << kG * std::sin(theta) * kH << "), kkt " << stats.kkt << ", relinearizations "
+              << stats.relinearizations << "\n";
+    EXPECT_TRUE(stats.converged) << to_string(method);
+    EXPECT_LT(stats.kkt, 1e-9) << to_string(method);
+    EXPECT_NEAR(along, kG * std::sin(theta) * kH, 1e-9) << to_string(method);
+  }
+}
+
+TEST(SolverRobustness, RelinearizationCapReportsNotConverged) {
+  for (SolverMethod method : kMethods) {
+    OwnedProblem owned = resting_particle(0.5);
+    RestlessLinearization restless;
+    ContactSolverSettings settings = solver_test::tight(method);
+    settings.max_relinearizations = 3;
+    Eigen::VectorXd dv;
+    const auto stats = solve_contacts(owned.problem, settings, dv, &restless);
+    std::cout << to_string(method) << ": restless relinearization: " << stats.relinearizations
+              << " relinearizations, converged " << stats.converged << "\n";
+    EXPECT_FALSE(stats.converged) << to_string(method);
+    EXPECT_EQ(stats.relinearizations, 3) << to_string(method);
+  }
+}
+
+TEST(SolverRobustness, FrozenContactsNeverPenetrate) {
+  // max_flips = 0: every contact is frozen from the start. A falling
+  // particle's contact must still activate and hold it.
+  for (SolverMethod method : {SolverMethod::cr, SolverMethod::cr_plain}) {
+    OwnedProblem owned = resting_particle(0.5);
+    ContactSolverSettings settings = solver_test::tight(method);
+    settings.max_flips = 0;
+    const auto s = solver_test::solve_copy(owned.problem, settings);
+    std::cout << to_string(method) << ": frozen falling particle: dv_z " << s.dv[2] << ", kkt " << s.stats.kkt
+              << ", frozen " << s.stats.frozen << "\n";
+    EXPECT_TRUE(s.stats.converged) << to_string(method);
+    EXPECT_GT(s.dv[2], -1e-9) << to_string(method) << ": must not penetrate";
+    EXPECT_LT(s.stats.kkt, 1e-9) << to_string(method);
+    EXPECT_EQ(s.stats.frozen, 1) << to_string(method);
+  }
+}
+
+TEST(SolverRobustness, FrozenPullingContactIsNotConverged) {
+  // Warm started active, then pulled upward: the contact should separate,
+  // but with max_flips = 0 it is frozen active and would have to pull.
+  for (SolverMethod method : {SolverMethod::cr, SolverMethod::cr_plain}) {
+    OwnedProblem owned = resting_particle(0.5);
+    owned.problem.b[2] = +kH * kG;
+    owned.problem.states[0].mode = ContactMode::sliding;
+    owned.problem.states[0].lambda = 0.1;
+    ContactSolverSettings settings = solver_test::tight(method);
+    settings.max_flips = 0;
+    const auto frozen = solver_test::solve_copy(owned.problem, settings);
+    settings.max_flips = 8;
+    const auto free = solver_test::solve_copy(owned.problem, settings);
+    std::cout << to_string(method) << ": frozen pulling contact: lambda " << frozen.states[0].lambda << ", converged "
+              << frozen.stats.converged << "; unfrozen: dv_z " << free.dv[2] << "\n";
+    EXPECT_FALSE(frozen.stats.converged) << to_string(method);
+    EXPECT_TRUE(free.stats.converged) << to_string(method);
+    EXPECT_NEAR(free.dv[2], kH * kG, 1e-9) << to_string(method);
+    EXPECT_EQ(free.states[0].mode, ContactMode::inactive) << to_string(method);
+  }
+}
+
+// Two sticking contacts on one particle with the same frame but tangential
+// right-hand sides 1e-7 m/s apart: B is singular and d is not in its range,
+// so the residual cannot drop below ~5e-8 m/s. Tolerance 1e-11: without the
+// |B C^-1 r| exit the solver would iterate to the cap.
+TEST(SolverRobustness, StationaryResidualStopsEarly) {
+  for (SolverMethod method : {SolverMethod::cr, SolverMethod::cr_plain}) {
+    OwnedProblem owned = particle_on_incline(1.0, 0.0, kG, kH, Eigen::Vector2d::Zero(), 1e6, 1e6);
+    owned.problem.rows.push_back(owned.problem.rows[0]);
+    owned.problem.states.push_back(owned.problem.states[0]);
+    owned.problem.rows[1].rhs_tangent = Eigen::Vector2d(1e-7, 0.0);
+    for (ContactState& s : owned.problem.states) {
+      s.mode = ContactMode::sticking;
+      s.lambda = 0.5 * kH * kG;
+    }
+    ContactSolverSettings settings = solver_test::tight(method);
+    settings.max_iterations = 20000;
+    const auto s = solver_test::solve_copy(owned.problem, settings);
+    std::cout << to_string(method) << ": inconsistent sticking rows: iterations " << s.stats.iterations
+              << ", restarts " << s.stats.restarts << ", residual " << s.stats.residual << ", dv_y " << s.dv[1]
+              << ", lambdas " << s.states[0].lambda << " " << s.states[1].lambda << "\n";
+    EXPECT_TRUE(s.stats.converged) << to_string(method);
+    EXPECT_LT(s.stats.iterations + s.stats.restarts, 200) << to_string(method);
+    EXPECT_NEAR(s.dv[1], 0.5e-7, 1e-9) << to_string(method) << ": the least-squares compromise";
+    EXPECT_NEAR(s.states[0].lambda + s.states[1].lambda, kH * kG, 1e-9) << to_string(method);
+    EXPECT_LT(std::abs(s.states[0].gamma[0]) + std::abs(s.states[1].gamma[0]), 1.0) << to_string(method);
+  }
+}
+
+}  // namespace
+}  // namespace recoil::sim
