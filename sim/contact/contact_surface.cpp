@@ -1,16 +1,11 @@
 #include "sim/contact/contact_surface.h"
 
 #include "core/check.h"
+#include "sim/geometry/skew.h"
 
 namespace recoil::sim {
 
 namespace {
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d s;
-  s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return s;
-}
 
 void embedded(const ContactSurface& s, const Eigen::VectorXd& nodes_global, Points& out) {
   const Embedding& e = *s.embedding;

@@ -7,6 +7,7 @@
 #include <Eigen/LU>
 
 #include "sim/fem/material.h"
+#include "sim/geometry/skew.h"
 
 namespace recoil::sim {
 
@@ -37,11 +38,6 @@ DensityEval neo_hookean_density(const Eigen::Matrix3d& F, const Lame& lame, Hess
   out.dPdF = mu * Matrix9d::Identity() + lambda * g * g.transpose();
   // d(cofactor)[dF] is linear in dF; its 9x9 matrix has 3x3 blocks (a, b)
   // equal to the cross-product matrices of the third column, with signs.
-  auto skew = [](const Eigen::Vector3d& v) {
-    Eigen::Matrix3d m;
-    m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-    return m;
-  };
   Matrix9d H = Matrix9d::Zero();
   // d(f1 x f2) = df1 x f2 + f1 x df2 = -[f2]x df1 + [f1]x df2, and cyclic.
   const Eigen::Vector3d f0 = F.col(0), f1 = F.col(1), f2 = F.col(2);

@@ -3,19 +3,10 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "sim/geometry/skew.h"
 #include "sim/rigid/mass_properties.h"
 
 namespace recoil::sim {
-
-namespace {
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& a) {
-  Eigen::Matrix3d s;
-  s << 0.0, -a.z(), a.y(), a.z(), 0.0, -a.x(), -a.y(), a.x(), 0.0;
-  return s;
-}
-
-}  // namespace
 
 Eigen::Matrix3d RigidBody::world_inertia() const {
   const Eigen::Matrix3d R = rotation();

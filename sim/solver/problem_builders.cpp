@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/check.h"
+#include "sim/geometry/skew.h"
 
 namespace recoil::sim {
 
@@ -87,6 +88,27 @@ OwnedProblem particle_on_incline(double mass, double theta, double g, double h, 
   return out;
 }
 
+std::unique_ptr<BlockSparseMatrix> mass_spring_matrix(const std::vector<double>& masses,
+                                                      const std::vector<std::pair<int, int>>& springs,
+                                                      double h2_stiffness) {
+  std::vector<std::pair<int, int>> pairs;
+  for (const auto& [a, b] : springs) {
+    pairs.emplace_back(a, b);
+    pairs.emplace_back(b, a);
+  }
+  const int nodes = static_cast<int>(masses.size());
+  auto A = std::make_unique<BlockSparseMatrix>(nodes, pairs);
+  for (int i = 0; i < nodes; ++i) A->block(A->find(i, i)) = masses[static_cast<size_t>(i)] * Eigen::Matrix3d::Identity();
+  const Eigen::Matrix3d spring = h2_stiffness * Eigen::Matrix3d::Identity();
+  for (const auto& [a, b] : springs) {
+    A->block(A->find(a, a)) += spring;
+    A->block(A->find(b, b)) += spring;
+    A->block(A->find(a, b)) -= spring;
+    A->block(A->find(b, a)) -= spring;
+  }
+  return A;
+}
+
 OwnedProblem lattice_on_ground(int nx, int ny, int nz, double mass, double mass_ratio, double stiffness, double h,
                                double mu, double drift, std::mt19937& rng) {
   const auto index = [&](int i, int j, int k) { return (k * ny + j) * nx + i; };
@@ -99,29 +121,15 @@ OwnedProblem lattice_on_ground(int nx, int ny, int nz, double mass, double mass_
         if (j + 1 < ny) springs.emplace_back(index(i, j, k), index(i, j + 1, k));
         if (k + 1 < nz) springs.emplace_back(index(i, j, k), index(i, j, k + 1));
       }
-  std::vector<std::pair<int, int>> pairs;
-  for (const auto& [a, b] : springs) {
-    pairs.emplace_back(a, b);
-    pairs.emplace_back(b, a);
-  }
-  OwnedProblem out;
-  out.A = std::make_unique<BlockSparseMatrix>(nodes, pairs);
   std::uniform_real_distribution<double> unit(0.0, 1.0);
   std::vector<double> masses(static_cast<size_t>(nodes));
   for (double& m : masses) m = mass * std::pow(mass_ratio, unit(rng));
   const double g = 9.81;
+  OwnedProblem out;
+  out.A = mass_spring_matrix(masses, springs, h * h * stiffness);
   out.problem.b.resize(3 * nodes);
-  for (int i = 0; i < nodes; ++i) {
-    out.A->block(out.A->find(i, i)) = masses[static_cast<size_t>(i)] * Eigen::Matrix3d::Identity();
+  for (int i = 0; i < nodes; ++i)
     out.problem.b.segment<3>(3 * i) = h * masses[static_cast<size_t>(i)] * Eigen::Vector3d(0.0, 0.0, -g);
-  }
-  const Eigen::Matrix3d spring = h * h * stiffness * Eigen::Matrix3d::Identity();
-  for (const auto& [a, b] : springs) {
-    out.A->block(out.A->find(a, a)) += spring;
-    out.A->block(out.A->find(b, b)) += spring;
-    out.A->block(out.A->find(a, b)) -= spring;
-    out.A->block(out.A->find(b, a)) -= spring;
-  }
   out.problem.A = out.A.get();
   for (int j = 0; j < ny; ++j)
     for (int i = 0; i < nx; ++i) {
@@ -150,11 +158,9 @@ OwnedProblem rigid_box_on_ground(const Eigen::Vector3d& size, double mass, doubl
     const Eigen::Vector3d local(corner & 1 ? 0.5 * size.x() : -0.5 * size.x(),
                                 corner & 2 ? 0.5 * size.y() : -0.5 * size.y(), -0.5 * size.z());
     const Eigen::Vector3d r = R * local;
-    Eigen::Matrix3d cross;
-    cross << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
     ContactRows rows;
     rows.nodes = {0, 1};
-    rows.blocks = {F, -F * cross};
+    rows.blocks = {F, -F * skew(r)};
     rows.rhs_normal = -velocity.z();
     rows.rhs_tangent = -(F.bottomRows<2>() * velocity);
     rows.mu_static = mu_static;

@@ -6,6 +6,8 @@
 #include <Eigen/Core>
 #include <memory>
 #include <random>
+#include <utility>
+#include <vector>
 
 #include "sim/solver/contact_problem.h"
 
@@ -16,6 +18,13 @@ struct OwnedProblem {
   std::unique_ptr<BlockSparseMatrix> A;
   ContactProblem problem;
 };
+
+// A = M + h^2 K of point masses joined by isotropic springs: `masses` (kg,
+// one per node) on the diagonal blocks, and h^2 k (N s^2/m) stamped for
+// each spring (a, b) into blocks (a,a), (b,b), (a,b), (b,a).
+std::unique_ptr<BlockSparseMatrix> mass_spring_matrix(const std::vector<double>& masses,
+                                                      const std::vector<std::pair<int, int>>& springs,
+                                                      double h2_stiffness);
 
 // A random SPD A of `nodes` 3x3 block rows (every block present, diagonal
 // dominance controlled by `shift`), a random b, and no contacts.

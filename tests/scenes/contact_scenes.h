@@ -10,6 +10,7 @@
 #include "sim/geometry/mesh_import.h"
 #include "sim/geometry/primitives.h"
 #include "sim/world_desc.h"
+#include "tests/sim/fem/fem_scenes.h"
 
 namespace recoil::sim::scenes {
 
@@ -62,12 +63,7 @@ inline Material jelly(double youngs_modulus = 2e4, double density = 1000.0) {
 
 inline DeformableBodyDesc soft_box(const std::string& name, const Eigen::Vector3d& size, int resolution,
                                    const Material& material, const Eigen::Vector3d& position, FrictionDesc f = {}) {
-  DeformableBodyDesc b;
-  b.name = name;
-  b.mesh = make_box(size, 1);
-  b.resolution = resolution;
-  b.material = material;
-  b.transform.position = position;
+  DeformableBodyDesc b = test_scenes::box_body(size, resolution, material, position, name);
   b.static_friction = f.static_coefficient;
   b.kinetic_friction = f.kinetic_coefficient;
   b.self_contact = false;

@@ -64,14 +64,7 @@ OwnedProblem ill_conditioned_lattice() {
   return lattice_on_ground(4, 4, 3, 0.001, 1e4, 2000.0, 1.0 / 60.0, 0.5, 0.3, rng);
 }
 
-ContactSolverSettings bench_settings(SolverMethod method) {
-  ContactSolverSettings s;
-  s.method = method;
-  s.tolerance = 1e-8;
-  s.constraint_tolerance = 1e-8;
-  s.max_iterations = 100000;
-  return s;
-}
+ContactSolverSettings bench_settings(SolverMethod method) { return tight(method, 1e-8, 100000); }
 
 TEST(SolverConvergence, PreconditionerCutsIterations) {
   OwnedProblem owned = ill_conditioned_lattice();

@@ -39,22 +39,9 @@ OwnedProblem sliding_square(int side, double stiffness) {
       if (i + 1 < side) springs.emplace_back(j * side + i, j * side + i + 1);
       if (j + 1 < side) springs.emplace_back(j * side + i, (j + 1) * side + i);
     }
-  std::vector<std::pair<int, int>> pairs;
-  for (const auto& [a, b] : springs) {
-    pairs.emplace_back(a, b);
-    pairs.emplace_back(b, a);
-  }
-  OwnedProblem out;
-  out.A = std::make_unique<BlockSparseMatrix>(nodes, pairs);
   const double m = 1.0 / nodes;
-  for (int i = 0; i < nodes; ++i) out.A->block(out.A->find(i, i)) = m * Eigen::Matrix3d::Identity();
-  const Eigen::Matrix3d spring = kH * kH * stiffness * Eigen::Matrix3d::Identity();
-  for (const auto& [a, b] : springs) {
-    out.A->block(out.A->find(a, a)) += spring;
-    out.A->block(out.A->find(b, b)) += spring;
-    out.A->block(out.A->find(a, b)) -= spring;
-    out.A->block(out.A->find(b, a)) -= spring;
-  }
+  OwnedProblem out;
+  out.A = mass_spring_matrix(std::vector<double>(static_cast<size_t>(nodes), m), springs, kH * kH * stiffness);
   out.problem.A = out.A.get();
   out.problem.b.resize(3 * nodes);
   for (int i = 0; i < nodes; ++i) out.problem.b.segment<3>(3 * i) = kH * m * Eigen::Vector3d(0.0, kSide, -kG);

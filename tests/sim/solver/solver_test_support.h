@@ -9,12 +9,13 @@
 
 namespace recoil::sim::solver_test {
 
-inline ContactSolverSettings tight(SolverMethod method) {
+// Settings with both tolerances (m/s) at `tolerance` and a generous cap.
+inline ContactSolverSettings tight(SolverMethod method, double tolerance = 1e-11, int max_iterations = 200000) {
   ContactSolverSettings s;
   s.method = method;
-  s.tolerance = 1e-11;
-  s.constraint_tolerance = 1e-11;
-  s.max_iterations = 200000;
+  s.tolerance = tolerance;
+  s.constraint_tolerance = tolerance;
+  s.max_iterations = max_iterations;
   return s;
 }
 
