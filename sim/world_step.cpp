@@ -5,6 +5,7 @@
 #include "core/check.h"
 #include "sim/collision/collision_detector.h"
 #include "sim/fem/assembly.h"
+#include "sim/solver/contact_rows_ops.h"
 #include "sim/world.h"
 
 namespace recoil::sim {
@@ -21,10 +22,7 @@ double ms_since(Clock::time_point start) {
 bool free_solution_is_feasible(const ContactProblem& problem, const Eigen::VectorXd& dv) {
   for (size_t k = 0; k < problem.rows.size(); ++k) {
     if (problem.states[k].mode != ContactMode::inactive) return false;
-    const ContactRows& rows = problem.rows[k];
-    double jdv = 0.0;
-    for (size_t i = 0; i < rows.nodes.size(); ++i) jdv += rows.blocks[i].row(0).dot(dv.segment<3>(3 * rows.nodes[i]));
-    if (jdv < rows.rhs_normal) return false;
+    if (rows_times(problem.rows[k], dv)[0] < problem.rows[k].rhs_normal) return false;
   }
   return true;
 }
@@ -149,7 +147,8 @@ void World::collide_and_solve(StepReport& report) {
   ContactProblem problem;
   problem.A = &m_A;
   problem.b = m_b;
-  // Rows linearised at the contact-free prediction; the solver starts from it too.
+  // Rows linearised at the contact-free prediction (the solver itself starts
+  // from dv = 0: see cr_solver.cpp).
   model.build(candidates, m_dv, m_memory, problem);
   report.contacts = model.num_contacts();
   if (free_solution_is_feasible(problem, m_dv)) {
