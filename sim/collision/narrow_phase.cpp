@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
 #include "core/check.h"
 #include "sim/collision/ccd.h"
@@ -57,6 +58,23 @@ Eigen::Vector3d edge_cross(const Eigen::Vector3d& da, const Eigen::Vector3d& db)
 }
 
 Eigen::Vector3d lerp(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double s) { return x0 + s * (x1 - x0); }
+
+// Barycentric weights below this are rounding noise of a closest point that
+// lies on an edge or vertex (a vertex above a triangulation diagonal): they
+// are set to zero so that both triangles name the same feature.
+constexpr double kFeatureWeightTolerance = 1e-9;
+
+std::array<double, 3> snap_to_feature(std::array<double, 3> w) {
+  double sum = 0.0;
+  for (double& wi : w) {
+    if (wi < kFeatureWeightTolerance) wi = 0.0;
+    sum += wi;
+  }
+  for (double& wi : w) wi /= sum;
+  return w;
+}
+
+bool on_triangle_boundary(const std::array<double, 3>& w) { return w[0] == 0.0 || w[1] == 0.0 || w[2] == 0.0; }
 
 }  // namespace
 
@@ -168,15 +186,22 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
     // Weights and normal where the vertex meets the triangle.
     const double s = *c.toi;
     const Eigen::Vector3d ta = lerp(t0[0], t1[0], s), tb = lerp(t0[1], t1[1], s), tc = lerp(t0[2], t1[2], s);
-    c.b.weight = closest_point_on_triangle(lerp(p0, p1, s), ta, tb, tc).weight;
+    c.b.weight = snap_to_feature(closest_point_on_triangle(lerp(p0, p1, s), ta, tb, tc).weight);
     feature = face_normal(ta, tb, tc);
   } else {
-    c.b.weight = closest.weight;
+    c.b.weight = snap_to_feature(closest.weight);
     feature = face_normal(t0[0], t0[1], t0[2]);
   }
   const Eigen::Vector3d q0 = c.b.evaluate(sb.x0), q1 = c.b.evaluate(sb.x1);
   const Eigen::Vector3d sep0 = p0 - q0, rel = (p1 - q1) - sep0;
-  const bool touching = c.toi.has_value() || sep0.norm() <= tol;
+  const bool touching_at_start = sep0.norm() <= tol;
+  // Touching at the start on an edge or vertex of this triangle: its face
+  // normal is only one of the feature's normals (a corner resting exactly on
+  // a corner touches the top face and both side faces). Only a face that the
+  // vertex is moving into defines the contact; the others are left to the
+  // neighbouring triangles of the same feature (narrow_phase.h).
+  if (touching_at_start && on_triangle_boundary(c.b.weight) && !(feature.dot(rel) < 0.0)) return std::nullopt;
+  const bool touching = c.toi.has_value() || touching_at_start;
   c.normal = choose_normal(touching, sep0, feature, /*outward=*/true, rel, tol);
   c.gap = c.normal.dot(sep0);
   return c;
@@ -295,10 +320,40 @@ void finalize_candidates(std::vector<ContactCandidate>& candidates) {
     if (kl != kr) return kl < kr;
     return preferred(l, r);
   });
-  candidates = std::move(others);
+  std::vector<ContactCandidate> per_feature;
   for (size_t i = 0; i < vertex_triangle.size(); ++i)
     if (i == 0 || feature_key(vertex_triangle[i]) != feature_key(vertex_triangle[i - 1]))
-      candidates.push_back(std::move(vertex_triangle[i]));
+      per_feature.push_back(std::move(vertex_triangle[i]));
+
+  // A vertex against a vertex is found from both sides; the two rows are the
+  // same constraint, so only the preferred one (earliest impact, then the
+  // smaller (surface, vertex) of side A) is kept.
+  auto vertex_pair = [&](const ContactCandidate& c) -> std::optional<std::array<int, 4>> {
+    const auto key = feature_key(c);
+    if (key[4] != -1) return std::nullopt;  // an edge or the interior of B's triangle
+    std::array<int, 2> mine = {c.surface_a, c.primitive_a}, theirs = {c.surface_b, key[3]};
+    if (theirs < mine) std::swap(mine, theirs);
+    return std::array<int, 4>{mine[0], mine[1], theirs[0], theirs[1]};
+  };
+  std::map<std::array<int, 4>, size_t> kept;  // vertex pair -> index into per_feature
+  std::vector<char> keep(per_feature.size(), 1);
+  for (size_t i = 0; i < per_feature.size(); ++i) {
+    const auto pair = vertex_pair(per_feature[i]);
+    if (!pair) continue;
+    const auto [it, inserted] = kept.try_emplace(*pair, i);
+    if (inserted) continue;
+    const ContactCandidate& other = per_feature[it->second];
+    const double t_new = per_feature[i].toi.value_or(2.0), t_old = other.toi.value_or(2.0);
+    if (t_new < t_old) {  // the later-listed one impacts first: it wins
+      keep[it->second] = 0;
+      it->second = i;
+    } else {
+      keep[i] = 0;
+    }
+  }
+  candidates = std::move(others);
+  for (size_t i = 0; i < per_feature.size(); ++i)
+    if (keep[i]) candidates.push_back(std::move(per_feature[i]));
   std::sort(candidates.begin(), candidates.end(), candidate_less);
 }
 

@@ -21,12 +21,14 @@
 // surfaces, and prescribed surfaces against planes, are never tested.
 //
 // Closest-point weights: a vertex-triangle closest point on an edge or vertex
-// of the triangle has exact zero weights elsewhere, and finalize_candidates()
-// keeps one candidate per (vertex, feature): touching a mesh vertex shared by
-// six triangles gives one contact, not six. Between two surfaces both
-// directions are searched, so two vertices meeting (corner on corner) appear
-// once as A's vertex against B's vertex feature and once the other way round;
-// the two rows are the same constraint and the contact code may merge them.
+// of the triangle has zero weights elsewhere (weights below 1e-9 are rounding
+// and snapped to zero), and finalize_candidates() keeps one candidate per
+// (vertex, feature): touching a mesh vertex shared by six triangles gives one
+// contact, not six, and a vertex above a triangulation diagonal one, not two.
+// Between two surfaces both directions are searched, so two vertices meeting
+// (corner on corner) are found once as A's vertex against B's vertex and once
+// the other way round; the two rows are the same constraint, and only one is
+// kept.
 //
 // Normal (from q on B to p on A): (p - q)/|p - q| while the points are apart
 // (so the gap is the distance, >= 0, and open or thin surfaces work from both
@@ -37,6 +39,13 @@
 // (counter-clockwise triangles; A is assumed outside B), an edge cross product
 // is turned against the relative motion. Degenerate features fall back to
 // the direction of p - q, then the reversed relative motion, finally +z.
+// Touching at the start is ambiguous where the closest point is a triangle's
+// edge or vertex (a corner resting exactly on a corner touches the top face
+// and the side faces alike): there a triangle gives a candidate only if the
+// vertex moves into its face (normal . relative motion < 0), so a box set
+// down exactly on an equal box is held by the top face, not pushed sideways
+// by a side face. The contact solver then keeps resting contacts a small
+// distance apart (contact_model.h), and p - q decides from the next step on.
 #include <vector>
 
 #include "sim/collision/collision_types.h"
@@ -88,7 +97,8 @@ std::optional<ContactCandidate> test_vertex_plane(const PreparedSurface& a, int 
                                                   int plane_index, double margin);
 
 // Keeps one vertex-triangle candidate per (vertex, triangle feature) -- the
-// earliest impact, then the lowest triangle id -- and sorts with candidate_less.
+// earliest impact, then the lowest triangle id --, one per pair of vertices
+// found from both sides, and sorts with candidate_less.
 void finalize_candidates(std::vector<ContactCandidate>& candidates);
 
 }  // namespace recoil::sim

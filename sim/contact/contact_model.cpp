@@ -165,10 +165,17 @@ void ContactModel::linearize(Contact& c, const Configuration& conf, ContactRows&
   const Eigen::Vector3d p = point_a(c, conf.positions), q = point_b(c, conf.positions);
   const Eigen::Vector3d d = (p - point_a(c, m_start)) - (q - point_b(c, m_start));
   const double h = m_state.h;
-  rows.rhs_normal = jdv[0] - c.normal.dot(p - q) / h;
+  rows.rhs_normal = jdv[0] - (c.normal.dot(p - q) - c.rest_gap) / h;
   rows.rhs_tangent = Eigen::Vector2d(jdv[1] - c.t1.dot(d) / h, jdv[2] - c.t2.dot(d) / h);
   rows.mu_static = mu_s;
   rows.mu_kinetic = mu_k;
+}
+
+ContactModel::Contact ContactModel::make_contact(const ContactCandidate& candidate) const {
+  const Eigen::Vector3d n = candidate.normal.normalized();
+  Contact c{candidate, n, n, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0};
+  c.rest_gap = std::clamp(candidate.gap, 0.0, kRestGapFraction * m_margin);
+  return c;
 }
 
 void ContactModel::build(const std::vector<ContactCandidate>& candidates, const Eigen::VectorXd& dv,
@@ -179,8 +186,7 @@ void ContactModel::build(const std::vector<ContactCandidate>& candidates, const 
   problem.rows.clear();
   problem.states.clear();
   for (const ContactCandidate& cand : candidates) {
-    Contact c{cand, cand.normal.normalized(), cand.normal.normalized(), Eigen::Vector3d::Zero(),
-              Eigen::Vector3d::Zero()};
+    Contact c = make_contact(cand);
     ContactRows rows;
     linearize(c, conf, rows);
     problem.states.push_back(memory.recall(contact_key(cand), c.t1, c.t2));
@@ -201,8 +207,7 @@ int ContactModel::add_new_contacts(const Eigen::VectorXd& dv, ContactProblem& pr
   int added = 0;
   for (const ContactCandidate& cand : found) {
     if (known.count(contact_key(cand))) continue;
-    Contact c{cand, cand.normal.normalized(), cand.normal.normalized(), Eigen::Vector3d::Zero(),
-              Eigen::Vector3d::Zero()};
+    Contact c = make_contact(cand);
     ContactRows rows;
     linearize(c, conf, rows);
     // Only pairs within the margin at x* are contacts; the rest stay out.

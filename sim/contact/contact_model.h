@@ -10,8 +10,16 @@
 //   gap g*        = n.(p* - q*)
 //   displacement  d* = (p* - p0) - (q* - q0)   (relative, over the step)
 //   J_n h = d g / d dv, J_t h = d (t.d) / d dv  (n, t held)
-//   rhs_normal    = J_n dv - g*/h              so J_n dv' >= rhs  <=>  g(dv') >= 0 to first order
+//   rhs_normal    = J_n dv - (g* - g_rest)/h   so J_n dv' >= rhs  <=>  g(dv') >= g_rest to first order
 //   rhs_tangent   = J_t dv - t.d*/h            so sticking means no relative tangential motion
+// Resting distance g_rest = clamp(g0, 0, kRestGapFraction * margin), with g0
+// the candidate's gap at the start of the step: contacts that approach stop a
+// tenth of the margin apart instead of exactly touching. At zero distance the
+// next step cannot tell a vertex resting on a corner from one beside it (the
+// top and side faces both contain the corner), and a stack of boxes then
+// falls through itself; a small positive distance keeps p - q meaningful. A
+// pair that is already closer keeps its gap (no push apart, no energy
+// injected), and a penetrating pair is pushed back to zero, as before.
 // The normal follows the contact: it is rotated with the triangle (vertex-
 // triangle) or the pair of edges (edge-edge) from the start of the step to
 // x*; a plane's normal is fixed. Tangents come from tangent_basis(n).
@@ -56,6 +64,8 @@ class ContactMemory {
 
 class ContactModel final : public ContactLinearization {
  public:
+  static constexpr double kRestGapFraction = 0.1;
+
   // surfaces: one per collision surface, in the detector's order; planes in
   // the candidates' plane order. `detector` (may be null) re-runs the search
   // for add_new_contacts; `margin` in m.
@@ -96,7 +106,9 @@ class ContactModel final : public ContactLinearization {
     Eigen::Vector3d normal0;   // the candidate's normal (start of the step / time of impact)
     Eigen::Vector3d normal;    // at the last linearisation
     Eigen::Vector3d t1, t2;
+    double rest_gap = 0.0;     // g_rest above, m
   };
+  Contact make_contact(const ContactCandidate& candidate) const;
   struct Configuration {       // predicted positions of every surface for one dv
     Eigen::VectorXd dv;
     std::vector<Points> positions;

@@ -57,6 +57,7 @@ class CrSolver {
   void restart_true();
   void restart_recurrence();
   void rescue_step();
+  void restart_after_breakdown();
   enum class Finish { converged, not_converged, go_on };
   Finish finish_or_continue();
   bool step();
@@ -277,14 +278,27 @@ void CrSolver::rescue_step() {
   update_stationary();
 }
 
+// A breakdown that comes back right after every restart means the selected
+// rows themselves are inconsistent: redundant rows whose right-hand sides
+// disagree (the ring of a rigid sphere's vertices over a plane, at different
+// heights, all warm-started active). Restarting alone would loop forever,
+// because the periodic constraint evaluation waits for `interval` iterations
+// without a restart; evaluating here lets the active set drop the rows that
+// pull.
+void CrSolver::restart_after_breakdown() {
+  ++m_stats.restarts;
+  if (evaluate_constraints(m_problem, m_tracks, m_y, m_settings.constraint_tolerance, m_settings.max_flips, false) > 0)
+    build_rhs();
+  restart_true();
+}
+
 // One CR iteration (Algorithm 1 lines 9-21). Returns false when it had to
 // restart instead.
 bool CrSolver::step() {
   apply_Cinv(m_q, m_t);
   const double den = m_q.dot(m_t);
   if (!(den > 0.0)) {
-    ++m_stats.restarts;
-    restart_true();
+    restart_after_breakdown();
     return false;
   }
   const double alpha = m_rho / den;
@@ -311,8 +325,7 @@ bool CrSolver::step() {
   update_stationary();
   const double rho = m_z.dot(m_bz);
   if (std::abs(rho) <= kBreakdown * m_z.norm() * m_bz.norm()) {
-    ++m_stats.restarts;
-    restart_true();
+    restart_after_breakdown();
     return false;
   }
   const double beta = rho / m_rho;

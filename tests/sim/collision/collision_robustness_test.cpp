@@ -107,15 +107,19 @@ TEST(CollisionRobustness, ThinPlateAgainstFastSheetEdges) {
 
 TEST(CollisionRobustness, ParallelEdgesAndCoplanarFaces) {
   // Two equal boxes, one exactly on top of the other (touching faces, parallel
-  // and coincident edges), then 1 mm apart.
+  // and coincident edges) and pressing down by 0.1 mm over the step, then
+  // 1 mm apart and still. Touching corner on corner, only the top face that
+  // the corner moves into may give the normal, never a side face.
   for (double separation : {0.0, 0.001}) {
     TriMesh lower = testing::box({0.05, 0.05, 0.05});
     TriMesh upper = lower;
     upper.vertices.col(2).array() += 0.1 + separation;
+    const Eigen::Vector3d press(0.0, 0.0, separation == 0.0 ? -1e-4 : 0.0);
     const auto found = detect_checked({moving_surface(lower, 1, SurfaceKind::rigid, Eigen::Vector3d::Zero()),
-                                       moving_surface(upper, 2, SurfaceKind::deformable, Eigen::Vector3d::Zero())},
+                                       moving_surface(upper, 2, SurfaceKind::deformable, press)},
                                       {}, 0.002);
-    // Each of the 4 + 4 facing corners touches the other face at a corner: one candidate each.
+    // The 4 facing corners of each box meet the 4 of the other: each pair is
+    // found from both sides but is one constraint, so one candidate per pair.
     int vertex_candidates = 0;
     for (const ContactCandidate& c : found) {
       ASSERT_TRUE(c.normal.allFinite());
@@ -123,7 +127,7 @@ TEST(CollisionRobustness, ParallelEdgesAndCoplanarFaces) {
       EXPECT_NEAR(std::abs(c.normal.z()), 1.0, 1e-12);
       vertex_candidates += c.kind == ContactKind::vertex_triangle;
     }
-    EXPECT_EQ(vertex_candidates, 8) << "separation " << separation;
+    EXPECT_EQ(vertex_candidates, 4) << "separation " << separation;
     std::cout << "separation " << separation << ": " << found.size() << " candidates\n";
   }
 }
