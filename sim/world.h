@@ -55,6 +55,7 @@ struct StepReport {
   double time = 0.0;           // simulated seconds after this step
   int solver_iterations = 0;
   double solver_residual = 0.0;
+  double solver_kkt = 0.0;     // contact stage: KKT residual of the returned solution, m/s (sim/solver/kkt_residual.h)
   bool solver_converged = true;
   int inverted_tets = 0;       // over all bodies
   // Contact stage (zero without candidates); SPEC.md section 4 sums these per frame.

@@ -172,6 +172,7 @@ void World::collide_and_solve(StepReport& report) {
   report.solver_iterations = stats.iterations;
   report.solver_restarts = stats.restarts;
   report.solver_residual = stats.residual;
+  report.solver_kkt = stats.kkt;
   report.solver_converged = stats.converged;
 }
 

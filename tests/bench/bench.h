@@ -35,5 +35,6 @@ class BenchTable {
 
 // Formats a number with `digits` after the point.
 std::string fixed(double value, int digits = 1);
+std::string scientific(double value, int digits = 1);
 
 }  // namespace recoil::bench

@@ -58,6 +58,12 @@ std::string fixed(double value, int digits) {
   return text;
 }
 
+std::string scientific(double value, int digits) {
+  char text[64];
+  std::snprintf(text, sizeof(text), "%.*e", digits, value);
+  return text;
+}
+
 }  // namespace recoil::bench
 
 int main(int argc, char** argv) {

@@ -2,7 +2,7 @@
 // short scenes: a jelly stack, a pile of eight deformable bunnies, a soft
 // block between counter-rotating rollers. Per method: mean solver
 // iterations per step, ms per step (whole step and solve stage), the final
-// KKT residual and the largest penetration; then the ratios cr/pgs time and
+// worst KKT residual over the steps and the largest penetration; then the ratios cr/pgs time and
 // cr_plain/cr iterations. Reports only; nothing is asserted.
 #include <iostream>
 #include <string>
@@ -15,20 +15,34 @@ namespace recoil::bench {
 namespace {
 
 struct Row {
-  double iterations = 0.0, step_ms = 0.0, solve_ms = 0.0, residual = 0.0, penetration = 0.0;
+  double iterations = 0.0, step_ms = 0.0, solve_ms = 0.0, kkt = 0.0, penetration = 0.0;
   long not_converged = 0;
 };
 
-Row run_scene(sim::WorldDesc desc, sim::SolverMethod method, int steps) {
+// The state every method starts from: `warmup` steps of `cr` from the
+// scene's start, so that the measured steps are in contact (a pile that has
+// landed, a block already between the rollers).
+struct Start {
+  Eigen::VectorXd x, v;
+};
+
+Start warm_up(const sim::WorldDesc& desc, int warmup) {
+  sim::World world(desc);
+  for (int i = 0; i < warmup; ++i) world.step();
+  return {world.positions(), world.velocities()};
+}
+
+Row run_scene(sim::WorldDesc desc, sim::SolverMethod method, const Start& start, int steps) {
   desc.contact.solver.method = method;
   sim::World world(desc);
+  world.set_state(start.x, start.v);
   Row row;
   for (int i = 0; i < steps; ++i) {
     const sim::StepReport r = world.step();
     row.iterations += r.solver_iterations;
     row.step_ms += r.profile.total;
     row.solve_ms += r.profile.solve;
-    row.residual = r.solver_residual;
+    row.kkt = std::max(row.kkt, r.solver_kkt);
     row.penetration = std::max(row.penetration, r.max_penetration);
   }
   row.not_converged = world.counters().solver_not_converged;
@@ -43,25 +57,31 @@ void bench_contact() {
   struct Scene {
     std::string name;
     sim::WorldDesc desc;
-    int steps;
+    int warmup, steps;
   };
-  // Each scene starts in contact (stack) or reaches it within the steps run.
   sim::WorldDesc stack = sim::scenes::jelly_stack(3, 0.1, 3, 0.01);
   sim::WorldDesc pile = sim::scenes::bunny_pile(bunny, 8, 0.12, 3, 0.005);
   sim::WorldDesc roll = sim::scenes::rollers(6.0, 3, 0.005);
-  const std::vector<Scene> scenes = {{"jelly stack (3)", stack, 10}, {"bunny pile (8)", pile, 10},
-                                     {"rollers", roll, 10}};
+  // The stack starts in contact. The first bunny of the pile meets the
+  // ground at step 8 and the second lands on it at step 23; the block meets
+  // the rollers at step 8. Longer runs are not measured yet: once two
+  // deformable bodies touch (or the block is between the rollers) the solve
+  // stops converging for every method (issue #5); such a step costs about a
+  // second with cr, and pgs builds a dense Delassus matrix of several GB.
+  const std::vector<Scene> scenes = {{"jelly stack (3)", stack, 0, 10}, {"bunny pile (8)", pile, 8, 14},
+                                     {"rollers", roll, 8, 2}};
   BenchTable table("contact solvers per step (tolerance 1e-7)",
-                   {"scene", "method", "steps", "iterations/step", "ms/step", "solve ms/step", "final residual",
+                   {"scene", "method", "steps (after warm-up)", "iterations/step", "ms/step", "solve ms/step", "worst KKT m/s",
                     "max penetration mm", "not converged"});
   BenchTable ratios("contact solver ratios", {"scene", "cr/pgs time", "cr_plain/cr iterations"});
   for (const Scene& scene : scenes) {
     Row rows[3];
+    const Start start = warm_up(scene.desc, scene.warmup);
     const sim::SolverMethod methods[3] = {sim::SolverMethod::cr, sim::SolverMethod::cr_plain, sim::SolverMethod::pgs};
     for (int m = 0; m < 3; ++m) {
-      rows[m] = run_scene(scene.desc, methods[m], scene.steps);
-      table.add_row({scene.name, sim::to_string(methods[m]), std::to_string(scene.steps), fixed(rows[m].iterations, 1),
-                     fixed(rows[m].step_ms, 2), fixed(rows[m].solve_ms, 2), std::to_string(rows[m].residual),
+      rows[m] = run_scene(scene.desc, methods[m], start, scene.steps);
+      table.add_row({scene.name, sim::to_string(methods[m]), std::to_string(scene.steps) + " (" + std::to_string(scene.warmup) + ")", fixed(rows[m].iterations, 1),
+                     fixed(rows[m].step_ms, 2), fixed(rows[m].solve_ms, 2), scientific(rows[m].kkt),
                      fixed(rows[m].penetration * 1e3, 3), std::to_string(rows[m].not_converged)});
     }
     ratios.add_row({scene.name, fixed(rows[0].solve_ms / std::max(rows[2].solve_ms, 1e-9), 2),

@@ -100,9 +100,13 @@ TEST(ContactValidation, SlideToStopAndConeIsotropy) {
   EXPECT_LT(creep_d, 1e-4);
 }
 
-// Disabled: the solver does not converge on the cluster of vertex-plane
-// contacts under the sphere (about 60 candidates, 4 active, all sliding,
-// omega stays 0): the sphere slides at g sin(theta) instead of rolling.
+// Disabled (issue #5): a faceted sphere (2562 vertices) rolls from vertex to
+// vertex, and the result depends on how the solve of each landing goes:
+// a = 0.42 m/s^2 before the rest gap, 1194 (energy blow-up) after it, and
+// 0.65 to 3.98 with 1e-6..1e-4 of relative compliance on the rows, against
+// (5/7) g sin(theta) = 1.81. With a coarser sphere and 1e-4 compliance one
+// run gave 1.81 to 0.3 %, so the redundant rows of the ring of vertices
+// near the plane are the suspect, not the friction law.
 TEST(ContactValidation, DISABLED_RollingSphere) {
   const double theta = 15.0 * kPi / 180.0, radius = 0.05, dt = 0.005;
   WorldDesc w = base_world(dt);

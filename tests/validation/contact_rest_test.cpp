@@ -70,8 +70,6 @@ TEST(ContactValidation, UndampedBallNeverGainsEnergy) {
   EXPECT_LT(worst, 0.01);
 }
 
-// Disabled: rigid-on-rigid box contacts blow up within 10 steps (energy
-// blow-up on box0); not yet diagnosed (box on plane passes every check).
 TEST(ContactValidation, AlignedBoxesDoNotFallThroughEachOther) {
   // Corner exactly over corner: every corner of one box touches the top face
   // and two side faces of the other. Resting at zero distance, the next
@@ -113,7 +111,14 @@ TEST(ContactValidation, RigidBoxStackStands) {
   EXPECT_LT(penetration, 0.002);
 }
 
-// Disabled: not yet run to completion within the time budget.
+// Disabled (issue #5): between two jelly cubes the contact solve does not
+// converge -- about 400 candidates, 100-270 active and nearly all sliding,
+// the iteration cap reached every step, and pgs fails the same way, so the
+// contact set rather than CR is the suspect (two face grids that coincide
+// vertex for vertex, then drift apart by fractions of a millimetre: vertex
+// pairs and edge pairs a hair from their ends describe nearly the same
+// constraint with slightly different right-hand sides). The cubes still
+// stand (drift 13-19 mm in 5 s) but penetrate up to 21 mm.
 TEST(ContactValidation, DISABLED_JellyStackStands) {
   const double dt = 0.01, size = 0.1;
   World world(jelly_stack(3, size, 3, dt));
