@@ -57,7 +57,7 @@ class CrSolver {
   void restart_true();
   void restart_recurrence();
   void rescue_step();
-  void restart_after_breakdown();
+  void restart_after_change();
   enum class Finish { converged, not_converged, go_on };
   Finish finish_or_continue();
   bool step();
@@ -278,17 +278,14 @@ void CrSolver::rescue_step() {
   update_stationary();
 }
 
-// A breakdown that comes back right after every restart means the selected
-// rows themselves are inconsistent: redundant rows whose right-hand sides
-// disagree (the ring of a rigid sphere's vertices over a plane, at different
-// heights, all warm-started active). Restarting alone would loop forever,
-// because the periodic constraint evaluation waits for `interval` iterations
-// without a restart; evaluating here lets the active set drop the rows that
-// pull.
-void CrSolver::restart_after_breakdown() {
+// The active set, the friction state or the rows changed: the right-hand
+// side follows and the Krylov space restarts from the true residual. The
+// iterate moves on from here, so an earlier re-linearisation no longer
+// describes where it will end, and convergence needs a fresh one.
+void CrSolver::restart_after_change() {
+  m_relinearized_ok = false;
   ++m_stats.restarts;
-  if (evaluate_constraints(m_problem, m_tracks, m_y, m_settings.constraint_tolerance, m_settings.max_flips, false) > 0)
-    build_rhs();
+  build_rhs();
   restart_true();
 }
 
@@ -298,7 +295,8 @@ bool CrSolver::step() {
   apply_Cinv(m_q, m_t);
   const double den = m_q.dot(m_t);
   if (!(den > 0.0)) {
-    restart_after_breakdown();
+    ++m_stats.restarts;
+    restart_true();
     return false;
   }
   const double alpha = m_rho / den;
@@ -315,9 +313,7 @@ bool CrSolver::step() {
     const int interval = std::max(1, static_cast<int>(std::floor(decades * decades / 2.0)));
     if (m_since_restart % interval == 0 &&
         evaluate_constraints(m_problem, m_tracks, m_y, m_settings.constraint_tolerance, m_settings.max_flips, false) > 0) {
-      ++m_stats.restarts;
-      build_rhs();
-      restart_true();
+      restart_after_change();
       return false;
     }
   }
@@ -325,7 +321,8 @@ bool CrSolver::step() {
   update_stationary();
   const double rho = m_z.dot(m_bz);
   if (std::abs(rho) <= kBreakdown * m_z.norm() * m_bz.norm()) {
-    restart_after_breakdown();
+    ++m_stats.restarts;
+    restart_true();
     return false;
   }
   const double beta = rho / m_rho;
@@ -348,23 +345,17 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   }
   const double eps2 = m_settings.constraint_tolerance;
   if (evaluate_constraints(m_problem, m_tracks, m_y, eps2, m_settings.max_flips, true) > 0) {
-    m_relinearized_ok = false;
-    ++m_stats.restarts;
-    build_rhs();
-    restart_true();
+    restart_after_change();
     return Finish::go_on;
   }
   if (m_linearization == nullptr) return Finish::converged;
   const Eigen::VectorXd dv = m_y.head(m_n);
   const int added = m_linearization->add_new_contacts(dv, m_problem);
   if (added > 0) {
-    m_relinearized_ok = false;
     m_stats.new_contacts += added;
     grow_contacts();
     refresh_rows();
-    ++m_stats.restarts;
-    build_rhs();
-    restart_true();
+    restart_after_change();
     return Finish::go_on;
   }
   if (m_relinearized_ok) return Finish::converged;
@@ -428,16 +419,19 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   for (int k = 0; k < contacts(); ++k) {
     ContactState& s = m_problem.states[static_cast<size_t>(k)];
     const ContactTrack& track = m_tracks[static_cast<size_t>(k)];
-    if (track.flips >= max_flips) ++m_stats.frozen;
     if (s.mode == ContactMode::inactive) {
       s = ContactState{};
       continue;
     }
     s.lambda = m_y[m_n + 3 * k];
     if (s.mode == ContactMode::sticking) s.gamma = m_y.segment<2>(m_n + 3 * k + 1);
-    // A frozen contact kept a mode its own law rejects (pulling, sticking
-    // outside the cone, sliding backwards): not a solution, say so.
-    if (track.flips >= max_flips && frozen_violation(k, dv) > m_settings.constraint_tolerance) m_stats.converged = false;
+    // Frozen (stats.frozen counts the active ones, as contact_problem.h
+    // says). One that kept a mode its own law rejects (pulling, sticking
+    // outside the cone, sliding backwards) is not a solution: say so.
+    if (track.flips >= max_flips) {
+      ++m_stats.frozen;
+      if (frozen_violation(k, dv) > m_settings.constraint_tolerance) m_stats.converged = false;
+    }
     if (s.mode == ContactMode::sticking) {
       ++m_stats.sticking;
     } else {
