@@ -52,17 +52,16 @@ void BenchTable::print() const {
   std::cout << std::flush;
 }
 
-std::string fixed(double value, int digits) {
+namespace {
+std::string format_double(const char* format, double value, int digits) {
   char text[64];
-  std::snprintf(text, sizeof(text), "%.*f", digits, value);
+  std::snprintf(text, sizeof(text), format, digits, value);
   return text;
 }
+}  // namespace
 
-std::string scientific(double value, int digits) {
-  char text[64];
-  std::snprintf(text, sizeof(text), "%.*e", digits, value);
-  return text;
-}
+std::string fixed(double value, int digits) { return format_double("%.*f", value, digits); }
+std::string scientific(double value, int digits) { return format_double("%.*e", value, digits); }
 
 }  // namespace recoil::bench
 

@@ -15,12 +15,6 @@
 namespace recoil::bench {
 namespace {
 
-std::string scientific(double value) {
-  char text[32];
-  std::snprintf(text, sizeof(text), "%.1e", value);
-  return text;
-}
-
 void bench_solver() {
   using namespace recoil::sim;
   BenchTable table("Contact solvers, lattice on the ground, h = 1/60 s, node masses 1..100 kg, tol 1e-6 m/s",

@@ -8,6 +8,7 @@
 
 #include "core/error.h"
 #include "sim/geometry/primitives.h"
+#include "sim/geometry/skew.h"
 #include "sim/rigid/mass_properties.h"
 
 namespace recoil::sim {
@@ -103,12 +104,9 @@ TEST(RigidBody, PoseUpdateIsExactForConstantSpin) {
 
 TEST(RigidBody, LeftJacobianMatchesFiniteDifferences) {
   const Eigen::Vector3d phi(0.3, -0.5, 0.8), r(0.2, 0.1, -0.4);
-  Eigen::Matrix3d Rs;
-  Rs << 0, 0, 0, 0, 0, 0, 0, 0, 0;
+  Eigen::Matrix3d Rs = Eigen::Matrix3d::Zero();
   const Eigen::Vector3d p = from_rotation_vector(phi) * r;
-  Eigen::Matrix3d skew_p;
-  skew_p << 0.0, -p.z(), p.y(), p.z(), 0.0, -p.x(), -p.y(), p.x(), 0.0;
-  const Eigen::Matrix3d analytic = -skew_p * so3_left_jacobian(phi);
+  const Eigen::Matrix3d analytic = -skew(p) * so3_left_jacobian(phi);
   const double eps = 1e-6;
   for (int k = 0; k < 3; ++k) {
     Eigen::Vector3d d = Eigen::Vector3d::Zero();

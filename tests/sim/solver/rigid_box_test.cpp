@@ -45,9 +45,7 @@ BoxCheck check(const solver_test::Solution& s, const Eigen::Vector3d& expected_l
 TEST(SolverRigidBox, RestsOnFourCorners) {
   for (SolverMethod method : kMethods) {
     OwnedProblem owned = rigid_box_on_ground(kSize, kMass, kYaw, kG, kH, Eigen::Vector3d::Zero(), 0.5, 0.5);
-    ContactSolverSettings settings = solver_test::tight(method);
-    settings.tolerance = settings.constraint_tolerance = 1e-10;
-    settings.max_iterations = 20000;
+    const ContactSolverSettings settings = solver_test::tight(method, 1e-10, 20000);
     const auto s = solver_test::solve_copy(owned.problem, settings);
     const BoxCheck c = check(s, Eigen::Vector3d::Zero());
     std::cout << to_string(method) << ": box at rest: |dv|_inf " << c.dv_error << ", sum lambda " << c.lambda_sum
@@ -66,9 +64,7 @@ TEST(SolverRigidBox, SlidesWithCoulombDeceleration) {
   const Eigen::Vector3d velocity(v0 * std::cos(0.2), v0 * std::sin(0.2), 0.0);
   for (SolverMethod method : kMethods) {
     OwnedProblem owned = rigid_box_on_ground(kSize, kMass, kYaw, kG, kH, velocity, mu, mu);
-    ContactSolverSettings settings = solver_test::tight(method);
-    settings.tolerance = settings.constraint_tolerance = 1e-10;
-    settings.max_iterations = 20000;
+    const ContactSolverSettings settings = solver_test::tight(method, 1e-10, 20000);
     const auto s = solver_test::solve_copy(owned.problem, settings);
     const BoxCheck c = check(s, -mu * kG * kH * velocity.normalized());
     std::cout << to_string(method) << ": sliding box: |dv - (-mu g h v_hat, 0)|_inf " << c.dv_error << ", sum lambda "

@@ -73,8 +73,7 @@ void run_turning_slide(int side, SolverMethod method, double tolerance) {
   Eigen::VectorXd v = Eigen::VectorXd::Zero(3 * nodes);
   for (int i = 0; i < nodes; ++i) v.segment<2>(3 * i) = v0;
   Eigen::Vector2d reference = v0;
-  ContactSolverSettings settings = solver_test::tight(method);
-  settings.tolerance = settings.constraint_tolerance = tolerance;
+  const ContactSolverSettings settings = solver_test::tight(method, tolerance);
   std::vector<ContactState> states(owned.problem.states.size());
   double worst = 0.0, worst_kkt = 0.0, worst_angle = 0.0, total_turn = 0.0;
   int sliding_steps = 0;
