@@ -10,7 +10,7 @@
 #include <system_error>
 
 #include "cli/commands.h"
-#include "cli/compare_io.h"
+#include "cli/file_io.h"
 #include "cli/compare_pairs.h"
 #include "cli/compare_report.h"
 #include "cli/progress.h"

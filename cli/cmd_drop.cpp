@@ -1,9 +1,8 @@
 // `recoil drop MESH...`: builds a drop-test scene (cli/drop_scene.cpp) and
 // runs it like `recoil run`.
-#include <fstream>
-
 #include "cli/commands.h"
 #include "cli/drop_scene.h"
+#include "cli/file_io.h"
 #include "cli/run_options.h"
 #include "cli/scene_parser.h"
 #include "core/error.h"
@@ -20,9 +19,7 @@ struct DropCommandOptions {
 int run_drop(const DropCommandOptions& options, const GlobalOptions& global) {
   const nlohmann::json document = build_drop_scene(options.drop);
   if (!options.save_scene.empty()) {
-    std::ofstream out(options.save_scene, std::ios::binary | std::ios::trunc);
-    out << document.dump(2) << "\n";
-    if (!out) throw output_error("cannot write " + options.save_scene);
+    write_text_atomically(options.save_scene, document.dump(2) + "\n");
   }
   SceneDesc scene = parse_scene(document, options.save_scene.empty() ? "drop" : options.save_scene,
                                 std::filesystem::current_path());

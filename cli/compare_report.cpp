@@ -4,7 +4,7 @@
 #include <cstdio>
 #include <ostream>
 
-#include "cli/compare_io.h"
+#include "cli/file_io.h"
 #include "core/check.h"
 #include "render/png.h"
 

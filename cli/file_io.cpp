@@ -1,4 +1,4 @@
-#include "cli/compare_io.h"
+#include "cli/file_io.h"
 
 #include <unistd.h>
 
@@ -35,6 +35,12 @@ void AtomicFile::commit() {
   fs::rename(m_temporary, m_target, ec);
   if (ec) throw output_error("cannot write " + m_target.string() + ": " + ec.message());
   m_committed = true;
+}
+
+void write_text_atomically(const fs::path& target, const std::string& text) {
+  AtomicFile file(target);
+  file.stream() << text;
+  file.commit();
 }
 
 std::vector<std::uint8_t> read_file_bytes(const fs::path& path) {

@@ -1,7 +1,8 @@
 #pragma once
-// Atomic file output for `recoil compare` (the HTML report, --update copies):
-// write beside the target, then rename, so a reader or a crash never leaves a
-// half-written reference frame or page behind (SPEC.md section 5).
+// Atomic file output (compare's HTML report and --update copies, run's
+// scene.json and run.json, drop's --save-scene): write beside the target,
+// then rename, so a reader or a crash never leaves a half-written file behind
+// (SPEC.md section 5).
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -27,6 +28,9 @@ class AtomicFile {
   std::ofstream m_stream;
   bool m_committed = false;
 };
+
+// Replaces `target` with `text`, atomically; throws output_failed.
+void write_text_atomically(const std::filesystem::path& target, const std::string& text);
 
 // The whole content of a file; throws recoil::Error(bad_input) naming it.
 std::vector<std::uint8_t> read_file_bytes(const std::filesystem::path& path);

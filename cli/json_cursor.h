@@ -37,10 +37,7 @@ class JsonCursor {
   // Requires an object whose keys are all in `allowed`; an unknown key fails
   // with a near-miss suggestion ("did you mean ...?").
   void expect_object(const std::vector<std::string>& allowed) const;
-  bool is_object() const { return m_in->is_object(); }
-  bool is_array() const { return m_in->is_array(); }
   bool is_number() const { return m_in->is_number(); }
-  bool is_string() const { return m_in->is_string(); }
   bool has(const std::string& key) const { return m_in->is_object() && m_in->contains(key); }
 
   // The member `key` (which must exist; fails "is required" otherwise).

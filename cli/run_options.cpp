@@ -31,13 +31,24 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
   if (given(o, "--background")) r["background"] = scene.render.background = o.render.background;
   if (given(o, "--wireframe")) r["wireframe"] = scene.render.wireframe = true;
   if (given(o, "--png-level")) r["png_level"] = scene.render.png_level = o.render.png_level;
+  // --color and --camera-distance change the scene itself, so that what is
+  // drawn and the scene.json written beside the frames say the same thing.
   if (given(o, "--color")) {
-    parse_color(o.render.color, "--color");
-    scene.render.color = o.render.color;
-    for (size_t i = 0; i < scene.bodies.size(); ++i)
-      if (scene.bodies[i].type != SceneBodyType::plane) scene.resolved["bodies"][i]["color"] = o.render.color;
+    const render::Rgb color = parse_color(o.render.color, "--color");
+    for (size_t i = 0; i < scene.bodies.size(); ++i) {
+      if (scene.bodies[i].type == SceneBodyType::plane) continue;
+      scene.bodies[i].color = color;
+      scene.resolved["bodies"][i]["color"] = o.render.color;
+    }
   }
-  if (given(o, "--camera-distance")) r["camera"]["distance"] = scene.render.camera_distance = o.render.camera_distance;
+  if (given(o, "--camera-distance")) {
+    scene.camera.distance = o.render.camera_distance;
+    // 0 means "fit the scene", which a scene file says by leaving the key out.
+    if (scene.camera.distance > 0.0)
+      r["camera"]["distance"] = scene.camera.distance;
+    else if (r.contains("camera"))
+      r["camera"].erase("distance");
+  }
   to_render_settings(scene.render);  // validates the combination (fps, resolution)
 }
 

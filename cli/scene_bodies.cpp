@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <numbers>
 
 #include "core/error.h"
@@ -151,7 +152,12 @@ struct Geometry {
   sim::TetMesh tets;  // when the mesh file is tetrahedral
 };
 
-Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir) {
+// Mesh files already read while parsing one scene, by resolved path: a
+// scene with a thousand copies of one mesh (`recoil drop --count 1000`)
+// imports it once.
+using MeshFiles = std::map<fs::path, Geometry>;
+
+Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir, MeshFiles& files) {
   const bool mesh = body.has("mesh"), primitive = body.has("primitive");
   if (mesh == primitive) body.fail(mesh ? "give either \"mesh\" or \"primitive\", not both" : "needs a \"mesh\" or a \"primitive\"");
   Geometry g;
@@ -160,7 +166,8 @@ Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir) {
     return g;
   }
   const JsonCursor c = body.child("mesh");
-  const fs::path path = resolve_file(c, base_dir);
+  const fs::path path = resolve_file(c, base_dir).lexically_normal();
+  if (const auto known = files.find(path); known != files.end()) return known->second;
   if (is_tet_file(path)) {
     g.tets = load_geometry(c, [&] { return sim::read_tet_file(path); });
     if (g.tets.empty()) c.fail("holds no tetrahedra: " + path.string());
@@ -169,6 +176,7 @@ Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir) {
     g.surface = load_geometry(c, [&] { return sim::import_surface(path); });
   }
   if (g.surface.empty()) c.fail("holds no triangles: " + path.string());
+  files.emplace(path, g);
   return g;
 }
 
@@ -202,7 +210,9 @@ void rayleigh_from_damping(double zeta, double youngs_modulus, double density, d
   beta = zeta / omega0;
 }
 
-void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, SceneDesc& scene) {
+namespace {
+
+void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, MeshFiles& files, SceneDesc& scene) {
   body.expect_object(kAllBodyKeys);
   const SceneBodyType type = parse_type(body.child("type"));
   const std::vector<std::string> allowed = keys_for(type);
@@ -243,7 +253,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Sce
   }
   out.opacity = static_cast<float>(body.has("opacity") ? body.child("opacity").number_in(0.0, 1.0)
                                                        : body.number_or("opacity", 1.0));
-  Geometry geometry = parse_geometry(body, base_dir);
+  Geometry geometry = parse_geometry(body, base_dir, files);
   const sim::Transform transform = parse_transform(body.child_or_empty("transform"));
 
   if (type == SceneBodyType::deformable) {
@@ -311,6 +321,13 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Sce
     scene.world.rigid_bodies.push_back(std::move(r));
   }
   scene.bodies.push_back(out);
+}
+
+}  // namespace
+
+void parse_bodies(const std::vector<JsonCursor>& bodies, const fs::path& base_dir, SceneDesc& scene) {
+  MeshFiles files;
+  for (size_t i = 0; i < bodies.size(); ++i) parse_body(bodies[i], static_cast<int>(i), base_dir, files, scene);
 }
 
 }  // namespace recoil::cli

@@ -2,15 +2,17 @@
 // The `bodies` array of a scene file: geometry (mesh files, tet files,
 // primitives), materials, friction, transforms and motion, into the WorldDesc.
 #include <filesystem>
+#include <vector>
 
 #include "cli/json_cursor.h"
 #include "cli/scene_desc.h"
 
 namespace recoil::cli {
 
-// Parses body `index` (cursor at /bodies/index) and appends it to `scene`
-// (scene.bodies and the matching WorldDesc list). Names must be unique.
-void parse_body(const JsonCursor& body, int index, const std::filesystem::path& base_dir, SceneDesc& scene);
+// Parses the bodies (cursors at /bodies/i) and appends them to `scene`
+// (scene.bodies and the matching WorldDesc lists). Names must be unique; a
+// mesh file named by several bodies is read once.
+void parse_bodies(const std::vector<JsonCursor>& bodies, const std::filesystem::path& base_dir, SceneDesc& scene);
 
 // SPEC's single `damping` (a damping ratio zeta) as Rayleigh coefficients
 // D = alpha M + beta K, split evenly between the two terms at the body's

@@ -169,7 +169,7 @@ SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, c
   parse_simulation(root.child_or_empty("simulation"), scene);
   const std::vector<JsonCursor> bodies = root.child("bodies").elements();
   if (bodies.empty()) root.child("bodies").fail("a scene needs at least one body");
-  for (size_t i = 0; i < bodies.size(); ++i) parse_body(bodies[i], static_cast<int>(i), base_dir, scene);
+  parse_bodies(bodies, base_dir, scene);
   parse_render(root.child_or_empty("render"), scene);
   return scene;
 }

@@ -9,6 +9,8 @@
 #include <thread>
 
 #include "cli/frame_names.h"
+#include "cli/frame_spec.h"
+#include "cli/file_io.h"
 #include "cli/frame_stats.h"
 #include "cli/output_dir.h"
 #include "cli/progress.h"
@@ -66,19 +68,6 @@ Error scene_error(const Error& e, const SceneDesc& scene) {
 
 namespace {
 
-void write_text_file(const fs::path& path, const std::string& text) {
-  const fs::path tmp = path.string() + ".tmp";
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    out << text;
-    out.flush();
-    if (!out) throw output_error("cannot write " + tmp.string());
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) throw output_error("cannot write " + path.string() + ": " + ec.message());
-}
-
 std::string describe_failure(const sim::StepReport& r, int frame, const std::string& what) {
   std::ostringstream s;
   s << "simulation failed at frame " << frame << " (step " << r.step << ", t = " << r.time << " s): body '" << r.body
@@ -94,9 +83,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const auto start = Clock::now();
   const SceneDesc& scene = job.scene;
   const double fps = scene.render.fps, dt = scene.world.dt;
-  std::vector<int> selected = job.frames;
-  if (selected.empty())
-    for (int k = 1; k <= scene.frame_count(); ++k) selected.push_back(k);
+  const std::vector<int> selected = job.frames.empty() ? all_frames(scene.frame_count()) : job.frames;
   const int last_frame = selected.back();
   // Frame names keep their width whatever subset is rendered.
   const int name_count = std::max(scene.frame_count(), last_frame);
@@ -106,7 +93,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   }
 
   ensure_output_dir(job.output_dir);
-  write_text_file(job.output_dir / "scene.json", scene.resolved.dump(2) + "\n");
+  write_text_atomically(job.output_dir / "scene.json", scene.resolved.dump(2) + "\n");
   const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
   if (stats_path.has_parent_path()) ensure_output_dir(stats_path.parent_path());
   std::ofstream stats_out(stats_path, std::ios::binary | std::ios::trunc);
@@ -133,8 +120,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     // One encoder per spare core; llvmpipe uses the others while drawing.
     const int encoders = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), encoders, 2 * encoders + 1);
-    view = std::make_unique<SceneView>(scene, world->surfaces(), static_cast<double>(settings.width) / settings.height,
-                                       scene.render.color, scene.render.camera_distance);
+    view = std::make_unique<SceneView>(scene, world->surfaces(), static_cast<double>(settings.width) / settings.height);
     if (!job.video.empty()) video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, fps);
   }
 
@@ -200,7 +186,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   report.timings.encode = writer ? writer->encode_ms() : 0.0;
   result.steps = world->counters().steps;
   report.finish(*world, result, ms_since(start));
-  write_text_file(job.output_dir / "run.json", report.json().dump(2) + "\n");
+  write_text_atomically(job.output_dir / "run.json", report.json().dump(2) + "\n");
   if (result.failed) throw Error(ErrorKind::sim_failed, result.message);
   return result;
 }

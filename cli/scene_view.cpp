@@ -33,16 +33,8 @@ sim::TriMesh slab_for(const sim::PlaneDesc& plane) {
 
 }  // namespace
 
-SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>& surfaces, double aspect,
-                     const std::string& color_override, double camera_distance)
-    : m_scene(scene), m_camera(scene.camera), m_aspect(aspect), m_last(surfaces) {
-  if (camera_distance > 0) m_camera.distance = camera_distance;
-  const render::Rgb* override_color = nullptr;
-  render::Rgb parsed{};
-  if (!color_override.empty()) {
-    parsed = parse_color(color_override, "--color");
-    override_color = &parsed;
-  }
+SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>& surfaces, double aspect)
+    : m_camera(scene.camera), m_aspect(aspect) {
   m_render.ground = false;
   m_render.grid = scene.grid;
   bool have_ground = false;
@@ -61,7 +53,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
   for (size_t i = 0; i < surfaces.size(); ++i) {
     const sim::BodySurface& s = surfaces[i];
     const SceneBody* body = scene.find(s.name);
-    const render::Rgb color = override_color ? *override_color : body ? body->color : palette_color(static_cast<int>(i));
+    const render::Rgb color = body ? body->color : palette_color(static_cast<int>(i));
     const float opacity = body ? body->opacity : 1.0f;
     sim::TriMesh mesh{s.positions, s.triangles};
     m_mesh_of_surface.push_back(static_cast<int>(m_render.meshes.size()));
@@ -70,6 +62,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
     if (!b.valid()) continue;
     if (s.name == m_camera.body) {
       m_follow = static_cast<int>(i);
+      m_follow_box = b;
       // Room around the body so its surroundings show: a few body sizes.
       m_follow_radius = std::max(1.5 * b.extent().norm(), 0.1);
     }
@@ -94,7 +87,7 @@ const render::RenderScene& SceneView::update(const std::vector<sim::BodySurface>
                "surfaces=" << surfaces.size() << " meshes=" << m_mesh_of_surface.size());
   for (size_t i = 0; i < surfaces.size(); ++i)
     update_positions(m_render.meshes[static_cast<size_t>(m_mesh_of_surface[i])], surfaces[i].positions);
-  m_last = surfaces;
+  if (m_follow >= 0) m_follow_box = bounds_of(surfaces[static_cast<size_t>(m_follow)].positions);
   return m_render;
 }
 
@@ -119,7 +112,7 @@ render::Camera SceneView::camera(int frame, int frame_count) const {
       return place(target, m_fit_radius, render::orbit_azimuth_deg(frame - 1, frame_count, c.turns, c.azimuth));
     case CameraMode::follow: {
       if (m_follow < 0) return place(target, m_fit_radius, c.azimuth);
-      const sim::Aabb b = bounds_of(m_last[static_cast<size_t>(m_follow)].positions);
+      const sim::Aabb& b = m_follow_box;
       if (!b.valid() || !b.min.allFinite() || !b.max.allFinite()) return place(target, m_fit_radius, c.azimuth);
       return place(b.center(), m_follow_radius, c.azimuth);
     }

@@ -16,8 +16,7 @@ class SceneView {
  public:
   // `surfaces`: the world's surfaces at time 0 (they fix the framing of a
   // camera without a position); `aspect` = width / height.
-  SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>& surfaces, double aspect,
-            const std::string& color_override = "", double camera_distance = 0.0);
+  SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>& surfaces, double aspect);
 
   // Updates the meshes to `surfaces` (same bodies as at construction).
   const render::RenderScene& update(const std::vector<sim::BodySurface>& surfaces);
@@ -25,13 +24,12 @@ class SceneView {
   render::Camera camera(int frame, int frame_count) const;
 
  private:
-  const SceneDesc& m_scene;
   CameraDesc m_camera;
   double m_aspect;
   render::RenderScene m_render;
   std::vector<int> m_mesh_of_surface;            // surface i -> m_render.meshes index
-  std::vector<sim::BodySurface> m_last;           // current surfaces (for follow)
   int m_follow = -1;                              // surface index of the followed body
+  sim::Aabb m_follow_box;                         // its current bounds
   double m_follow_radius = 0.1;                   // m: fixed at frame 1 so the view does not breathe
   Eigen::Vector3d m_fit_target = Eigen::Vector3d::Zero();
   double m_fit_radius = 1.0;

@@ -98,11 +98,11 @@ TEST(RunCommand, RendersTheSelectedFramesAndWritesSpecStats) {
   EXPECT_TRUE(s["max_penetration"].is_number());
   for (const char* key : {"step", "collision", "solve", "render", "encode"}) EXPECT_TRUE(s["ms"][key].is_number()) << key;
   EXPECT_GT(s["ms"]["render"].get<double>(), 0.0);
-  // Dynamic bodies in scene order: the deformable bunny, then the rigid crate
-  // (the crate only while the world reports rigid bodies).
-  ASSERT_GE(s["bodies"].size(), 1u);
+  // Dynamic bodies in scene order: the deformable bunny, then the rigid crate.
+  ASSERT_EQ(s["bodies"].size(), 2u);
   const json& bunny = s["bodies"][0];
   EXPECT_EQ(bunny["name"], "bunny");
+  EXPECT_EQ(s["bodies"][1]["name"], "crate");
   EXPECT_EQ(bunny["com"].size(), 3u);
   EXPECT_EQ(bunny["velocity"].size(), 3u);
   for (const char* key : {"kinetic_energy", "elastic_energy", "min_volume_ratio"}) EXPECT_TRUE(bunny[key].is_number()) << key;
@@ -114,6 +114,28 @@ TEST(RunCommand, RendersTheSelectedFramesAndWritesSpecStats) {
   EXPECT_EQ(run["frames"]["written"], 2);
   const json resolved = json::parse(file_bytes(dir / "scene.json"));
   EXPECT_EQ(resolved["render"]["resolution"], json::array({64, 48}));  // the override is recorded
+}
+
+TEST(RunCommand, ColorAndCameraDistanceOverridesGiveASceneRunAccepts) {
+  // The overrides change the scene itself: the recorded scene.json must say
+  // what was drawn and parse again (--camera-distance 0 means "fit").
+  const fs::path dir = scratch_dir("run_overrides"), rerun = scratch_dir("run_overrides_rerun");
+  const fs::path scene = source_path("assets/scenes/bunny-drop.json");
+  CommandResult r = run_recoil("run " + q(scene) + " --frames 1 --resolution 64x48 --color '#ff0000' --camera-distance 0 -o " +
+                               q(dir));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json resolved = json::parse(file_bytes(dir / "scene.json"));
+  int colored = 0;
+  for (const json& body : resolved["bodies"])
+    if (body.contains("color")) {
+      EXPECT_EQ(body["color"], "#ff0000") << body["name"];
+      ++colored;
+    }
+  EXPECT_GE(colored, 2);  // the bunny and the crate
+  EXPECT_FALSE(resolved["render"].contains("camera") && resolved["render"]["camera"].contains("distance"));
+  r = run_recoil("run " + q(dir / "scene.json") + " --frames 1 --resolution 64x48 -o " + q(rerun));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(file_bytes(dir / "frame_0001.png"), file_bytes(rerun / "frame_0001.png"));  // drawn the same
 }
 
 TEST(RunCommand, SameSceneTwiceGivesIdenticalFramesAndStats) {
