@@ -52,6 +52,7 @@ class CrSolver {
   void apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   void apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   double scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const;
+  double residual_norm(double& constraint_inf);
   void recompute_residual();
   void update_stationary();
   void restart_true();
@@ -76,6 +77,8 @@ class CrSolver {
   std::vector<ContactTrack> m_tracks;
   std::vector<Eigen::Matrix3d> m_contact_inv;  // (J_k P_A^-1 J_k^T)^-1 per contact (zero: use the diagonal)
   Eigen::VectorXd m_y, m_d, m_r, m_z, m_p, m_q, m_t, m_bz;
+  bool m_residual_norm_known = false;  // m_residual_norm / m_residual_inf describe m_r
+  double m_residual_norm = 0.0, m_residual_inf = 0.0;
   double m_rho = 0.0;
   int m_since_restart = 0;
   bool m_residual_true = false;
@@ -223,17 +226,29 @@ double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) c
   return std::sqrt(sum);
 }
 
+// scaled_norm(m_r), kept until m_r changes: the iteration asks for it up to
+// three times per step (restart interval, convergence and stationarity tests).
+double CrSolver::residual_norm(double& constraint_inf) {
+  if (!m_residual_norm_known) {
+    m_residual_norm = scaled_norm(m_r, m_residual_inf);
+    m_residual_norm_known = true;
+  }
+  constraint_inf = m_residual_inf;
+  return m_residual_norm;
+}
+
 // r = d - B y, explicitly; y is left as it is.
 void CrSolver::recompute_residual() {
   apply_B(m_y, m_r);
   m_r = m_d - m_r;
+  m_residual_norm_known = false;
   m_residual_true = true;
 }
 
 void CrSolver::update_stationary() {
   double constraint_inf = 0.0;
   const double bcr = scaled_norm(m_bz, constraint_inf);
-  m_stationary = bcr < m_settings.tolerance && bcr < kStationary * scaled_norm(m_r, constraint_inf);
+  m_stationary = bcr < m_settings.tolerance && bcr < kStationary * residual_norm(constraint_inf);
 }
 
 // Restart from the explicitly recomputed residual.
@@ -251,7 +266,7 @@ void CrSolver::restart_recurrence() {
   m_since_restart = 0;
   update_stationary();
   double constraint_inf = 0.0;
-  if (std::abs(m_rho) <= kBreakdown * m_z.norm() * m_bz.norm() && scaled_norm(m_r, constraint_inf) >= m_settings.tolerance)
+  if (std::abs(m_rho) <= kBreakdown * m_z.norm() * m_bz.norm() && residual_norm(constraint_inf) >= m_settings.tolerance)
     rescue_step();
 }
 
@@ -268,6 +283,7 @@ void CrSolver::rescue_step() {
   const double alpha = m_z.dot(bdir) / den;
   m_y += alpha * dir;
   m_r -= alpha * bdir;
+  m_residual_norm_known = false;
   m_residual_true = false;
   ++m_stats.iterations;
   apply_Cinv(m_r, m_z);
@@ -302,13 +318,14 @@ bool CrSolver::step() {
   const double alpha = m_rho / den;
   m_y += alpha * m_p;
   m_r -= alpha * m_q;
+  m_residual_norm_known = false;
   m_z -= alpha * m_t;
   m_residual_true = false;
   ++m_stats.iterations;
   ++m_since_restart;
   if (alpha > 0.0) {
     double constraint_inf = 0.0;
-    const double res = scaled_norm(m_r, constraint_inf);
+    const double res = residual_norm(constraint_inf);
     const double decades = res > m_settings.tolerance ? std::log10(res / m_settings.tolerance) : 0.0;
     const int interval = std::max(1, static_cast<int>(std::floor(decades * decades / 2.0)));
     if (m_since_restart % interval == 0 &&
@@ -399,7 +416,7 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   m_stats.converged = false;
   while (!out_of_budget()) {
     double constraint_inf = 0.0;
-    const double res = scaled_norm(m_r, constraint_inf);
+    const double res = residual_norm(constraint_inf);
     const bool small = res < m_settings.tolerance && (!m_residual_true || constraint_inf < m_settings.constraint_tolerance);
     if (small || m_stationary) {
       const Finish finish = finish_or_continue();
@@ -413,7 +430,7 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   // and the residual all describe the same y (no step after this point).
   if (!m_residual_true) recompute_residual();
   double constraint_inf = 0.0;
-  m_stats.residual = scaled_norm(m_r, constraint_inf);
+  m_stats.residual = residual_norm(constraint_inf);
   dv = m_y.head(m_n);
   const int max_flips = m_settings.max_flips;
   for (int k = 0; k < contacts(); ++k) {
