@@ -1,5 +1,6 @@
 #include "sim/collision/brute_force.h"
 
+#include "sim/collision/candidate_reduction.h"
 #include "sim/collision/narrow_phase.h"
 
 namespace recoil::sim {

@@ -6,6 +6,7 @@
 #include <thread>
 
 #include "core/check.h"
+#include "sim/collision/candidate_reduction.h"
 #include "sim/collision/embree_scene.h"
 #include "sim/collision/narrow_phase.h"
 

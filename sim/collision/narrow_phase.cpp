@@ -2,9 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 
 #include "core/check.h"
+#include "sim/collision/candidate_reduction.h"
 #include "sim/collision/ccd.h"
 #include "sim/collision/exact_distance.h"
 
@@ -59,17 +59,30 @@ Eigen::Vector3d edge_cross(const Eigen::Vector3d& da, const Eigen::Vector3d& db)
 
 Eigen::Vector3d lerp(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double s) { return x0 + s * (x1 - x0); }
 
-// Barycentric weights below this are rounding noise of a closest point that
-// lies on an edge or vertex (a vertex above a triangulation diagonal): they
-// are set to zero so that both triangles name the same feature.
-constexpr double kFeatureWeightTolerance = 1e-9;
+// A closest point this close to an edge or vertex of the triangle is taken
+// to be on it (candidate_reduction.h): as a share of the contact margin.
+constexpr double kFeatureSnapShare = 0.1;
+// Edges whose directions' sine is below this (about 3 degrees) are parallel.
+constexpr double kParallelEdgeSine = 0.05;
 
-std::array<double, 3> snap_to_feature(std::array<double, 3> w) {
-  double sum = 0.0;
-  for (double& wi : w) {
-    if (wi < kFeatureWeightTolerance) wi = 0.0;
-    sum += wi;
+// Zeroes the smallest weights of a closest point q on triangle t while the
+// point moves by less than `reach` in all (each weight w_i moves q by about
+// w_i |x_i - q|), then renormalises. A vertex a few microns off a
+// neighbour's vertex or edge names that vertex or edge: the same feature
+// from every triangle around it, so the reduction keeps one contact.
+std::array<double, 3> snap_to_feature(std::array<double, 3> w, const std::array<Eigen::Vector3d, 3>& t, double reach) {
+  const Eigen::Vector3d q = w[0] * t[0] + w[1] * t[1] + w[2] * t[2];
+  std::array<int, 3> order = {0, 1, 2};
+  std::sort(order.begin(), order.end(), [&](int l, int r) { return w[static_cast<size_t>(l)] < w[static_cast<size_t>(r)]; });
+  double moved = 0.0;
+  for (int i = 0; i < 2; ++i) {  // the largest weight always stays
+    const size_t k = static_cast<size_t>(order[static_cast<size_t>(i)]);
+    const double shift = w[k] * (t[k] - q).norm();
+    if (moved + shift >= reach) break;
+    moved += shift;
+    w[k] = 0.0;
   }
+  const double sum = w[0] + w[1] + w[2];
   for (double& wi : w) wi /= sum;
   return w;
 }
@@ -182,14 +195,15 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
     c.toi = vertex_triangle_toi(p0, p1, t0[0], t1[0], t0[1], t1[1], t0[2], t1[2], tol + 1e-12 * motion);
 
   Eigen::Vector3d feature = Eigen::Vector3d::Zero();
+  const double reach = kFeatureSnapShare * margin + tol;
   if (c.toi) {
     // Weights and normal where the vertex meets the triangle.
     const double s = *c.toi;
     const Eigen::Vector3d ta = lerp(t0[0], t1[0], s), tb = lerp(t0[1], t1[1], s), tc = lerp(t0[2], t1[2], s);
-    c.b.weight = snap_to_feature(closest_point_on_triangle(lerp(p0, p1, s), ta, tb, tc).weight);
+    c.b.weight = snap_to_feature(closest_point_on_triangle(lerp(p0, p1, s), ta, tb, tc).weight, {ta, tb, tc}, reach);
     feature = face_normal(ta, tb, tc);
   } else {
-    c.b.weight = snap_to_feature(closest.weight);
+    c.b.weight = snap_to_feature(closest.weight, t0, reach);
     feature = face_normal(t0[0], t0[1], t0[2]);
   }
   const Eigen::Vector3d q0 = c.b.evaluate(sb.x0), q1 = c.b.evaluate(sb.x1);
@@ -232,17 +246,21 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   }
   std::optional<double> toi;
   if (motion > 0.0) toi = edge_edge_toi(a0, a0e, a1, a1e, b0, b0e, b1, b1e, tol + 1e-12 * motion);
-  Eigen::Vector3d feature;
+  Eigen::Vector3d feature, da = a1 - a0, db = b1 - b0;  // at the impact if there is one
   if (toi) {
     const double s = *toi;
-    const Eigen::Vector3d pa = lerp(a0, a0e, s), qa = lerp(a1, a1e, s), pb = lerp(b0, b0e, s), qb = lerp(b1, b1e, s);
-    closest = closest_points_on_segments(pa, qa, pb, qb);
-    feature = edge_cross(qa - pa, qb - pb);
-  } else {
-    feature = edge_cross(a1 - a0, b1 - b0);
+    const Eigen::Vector3d pa = lerp(a0, a0e, s), pb = lerp(b0, b0e, s);
+    da = lerp(a1, a1e, s) - pa;
+    db = lerp(b1, b1e, s) - pb;
+    closest = closest_points_on_segments(pa, pa + da, pb, pb + db);
   }
-  // A closest point at an edge's end is a vertex contact (narrow_phase.h).
-  if (closest.s == 0.0 || closest.s == 1.0 || closest.t == 0.0 || closest.t == 1.0) return std::nullopt;
+  feature = edge_cross(da, db);
+  // A closest point at (or near) an edge's end is a vertex contact, and
+  // nearly parallel edges are held by their end vertices (narrow_phase.h).
+  const double reach = kFeatureSnapShare * margin + tol;
+  auto near_end = [&](double s, double length) { return std::min(s, 1.0 - s) * length < reach; };
+  if (near_end(closest.s, da.norm()) || near_end(closest.t, db.norm())) return std::nullopt;
+  if (feature.norm() < kParallelEdgeSine * da.norm() * db.norm()) return std::nullopt;
 
   ContactCandidate c;
   c.kind = ContactKind::edge_edge;
@@ -292,69 +310,6 @@ std::optional<ContactCandidate> test_vertex_plane(const PreparedSurface& a, int 
   if (d0 >= 0.0 && d1 <= 0.0 && d0 > d1) c.toi = d0 / (d0 - d1);
   else if (d0 == 0.0) c.toi = 0.0;
   return c;
-}
-
-void finalize_candidates(std::vector<ContactCandidate>& candidates) {
-  // Feature key of a vertex-triangle candidate: the vertices of B with a
-  // non-zero weight (one, two or three of them), sorted.
-  auto feature_key = [](const ContactCandidate& c) {
-    std::array<int, 3> feature = {-1, -1, -1};
-    int n = 0;
-    for (int i = 0; i < c.b.count; ++i)
-      if (c.b.weight[i] != 0.0) feature[n++] = c.b.vertex[i];
-    // Three-element sort by hand (unused slots stay -1 at the end).
-    for (int i = 1; i < n; ++i)
-      for (int j = i; j > 0 && feature[j] < feature[j - 1]; --j) std::swap(feature[j], feature[j - 1]);
-    return std::array<int, 6>{c.surface_a, c.primitive_a, c.surface_b, feature[0], feature[1], feature[2]};
-  };
-  auto preferred = [](const ContactCandidate& l, const ContactCandidate& r) {
-    const double tl = l.toi.value_or(2.0), tr = r.toi.value_or(2.0);
-    if (tl != tr) return tl < tr;
-    return l.primitive_b < r.primitive_b;
-  };
-  std::vector<ContactCandidate> others, vertex_triangle;
-  for (ContactCandidate& c : candidates)
-    (c.kind == ContactKind::vertex_triangle ? vertex_triangle : others).push_back(std::move(c));
-  std::sort(vertex_triangle.begin(), vertex_triangle.end(), [&](const ContactCandidate& l, const ContactCandidate& r) {
-    const auto kl = feature_key(l), kr = feature_key(r);
-    if (kl != kr) return kl < kr;
-    return preferred(l, r);
-  });
-  std::vector<ContactCandidate> per_feature;
-  for (size_t i = 0; i < vertex_triangle.size(); ++i)
-    if (i == 0 || feature_key(vertex_triangle[i]) != feature_key(vertex_triangle[i - 1]))
-      per_feature.push_back(std::move(vertex_triangle[i]));
-
-  // A vertex against a vertex is found from both sides; the two rows are the
-  // same constraint, so only the preferred one (earliest impact, then the
-  // smaller (surface, vertex) of side A) is kept.
-  auto vertex_pair = [&](const ContactCandidate& c) -> std::optional<std::array<int, 4>> {
-    const auto key = feature_key(c);
-    if (key[4] != -1) return std::nullopt;  // an edge or the interior of B's triangle
-    std::array<int, 2> mine = {c.surface_a, c.primitive_a}, theirs = {c.surface_b, key[3]};
-    if (theirs < mine) std::swap(mine, theirs);
-    return std::array<int, 4>{mine[0], mine[1], theirs[0], theirs[1]};
-  };
-  std::map<std::array<int, 4>, size_t> kept;  // vertex pair -> index into per_feature
-  std::vector<char> keep(per_feature.size(), 1);
-  for (size_t i = 0; i < per_feature.size(); ++i) {
-    const auto pair = vertex_pair(per_feature[i]);
-    if (!pair) continue;
-    const auto [it, inserted] = kept.try_emplace(*pair, i);
-    if (inserted) continue;
-    const ContactCandidate& other = per_feature[it->second];
-    const double t_new = per_feature[i].toi.value_or(2.0), t_old = other.toi.value_or(2.0);
-    if (t_new < t_old) {  // the later-listed one impacts first: it wins
-      keep[it->second] = 0;
-      it->second = i;
-    } else {
-      keep[i] = 0;
-    }
-  }
-  candidates = std::move(others);
-  for (size_t i = 0; i < per_feature.size(); ++i)
-    if (keep[i]) candidates.push_back(std::move(per_feature[i]));
-  std::sort(candidates.begin(), candidates.end(), candidate_less);
 }
 
 }  // namespace recoil::sim

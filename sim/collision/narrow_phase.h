@@ -11,24 +11,25 @@
 //   during the step (linear motion): the distance changes by at most
 //   s (d(v) + d(t)) over a fraction s of the step. Pairs that do meet
 //   (continuous check) always pass.
-// - edge e (A) / edge f (B): dist(e, f) <= margin + d(e) + d(f) at x0 and x1, and the
-//   closest points are interior to both edges (an end point is a vertex, and
-//   that contact is already a vertex-triangle candidate with the edge as its
-//   feature), unless the continuous check found an impact.
+// - edge e (A) / edge f (B): dist(e, f) <= margin + d(e) + d(f) at x0 and x1, the
+//   closest points (at the impact, if the continuous check found one) lie
+//   more than margin/10 from both edges' ends, and the edges are not
+//   parallel (the sine of their angle is at least 0.05, about 3 degrees).
+//   A closest point at an end is a vertex, already a vertex-triangle
+//   candidate with the edge as its feature; parallel edges that overlap have
+//   an end of one over the other, and that vertex holds them, whereas their
+//   own closest points could be anywhere along the overlap.
 // - vertex v / plane: min(signed distance at x0, at x1) <= margin.
 // Self-contact drops a vertex against the triangles of its one-ring and
 // edges sharing a vertex. Pairs of two prescribed (static or kinematic)
 // surfaces, and prescribed surfaces against planes, are never tested.
 //
 // Closest-point weights: a vertex-triangle closest point on an edge or vertex
-// of the triangle has zero weights elsewhere (weights below 1e-9 are rounding
-// and snapped to zero), and finalize_candidates() keeps one candidate per
-// (vertex, feature): touching a mesh vertex shared by six triangles gives one
-// contact, not six, and a vertex above a triangulation diagonal one, not two.
-// Between two surfaces both directions are searched, so two vertices meeting
-// (corner on corner) are found once as A's vertex against B's vertex and once
-// the other way round; the two rows are the same constraint, and only one is
-// kept.
+// of the triangle has zero weights elsewhere, and one within margin/10 of an
+// edge or vertex is moved onto it (the smallest weights are zeroed while
+// the point moves less than that). The detector then reduces the candidates
+// (candidate_reduction.h): one per vertex and direction, one per pair of
+// vertices found from both sides.
 //
 // Normal (from q on B to p on A): (p - q)/|p - q| while the points are apart
 // (so the gap is the distance, >= 0, and open or thin surfaces work from both
@@ -95,10 +96,5 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
                                                int edge_b, double margin);
 std::optional<ContactCandidate> test_vertex_plane(const PreparedSurface& a, int vertex, const CollisionPlane& plane,
                                                   int plane_index, double margin);
-
-// Keeps one vertex-triangle candidate per (vertex, triangle feature) -- the
-// earliest impact, then the lowest triangle id --, one per pair of vertices
-// found from both sides, and sorts with candidate_less.
-void finalize_candidates(std::vector<ContactCandidate>& candidates);
 
 }  // namespace recoil::sim

@@ -4,9 +4,9 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <set>
 
 #include "core/check.h"
+#include "sim/collision/candidate_reduction.h"
 #include "sim/collision/collision_detector.h"
 #include "sim/contact/tangent_basis.h"
 
@@ -200,13 +200,18 @@ int ContactModel::add_new_contacts(const Eigen::VectorXd& dv, ContactProblem& pr
   const auto start = std::chrono::steady_clock::now();
   const std::vector<ContactCandidate> found = m_detector->detect(collision_surfaces(dv), collision_planes());
   m_collide_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
-  std::set<ContactKey> known;
-  for (const Contact& c : m_contacts) known.insert(contact_key(c.candidate));
+  // A contact already in the problem may be found again through another
+  // triangle of the same vertex: that is not a new contact (candidate_reduction.h).
+  std::vector<ContactCandidate> known;
+  known.reserve(m_contacts.size());
+  for (const Contact& c : m_contacts) known.push_back(c.candidate);
+  const std::vector<char> is_known = already_known(known, found);
   Configuration conf;
   predict(dv, conf);
   int added = 0;
-  for (const ContactCandidate& cand : found) {
-    if (known.count(contact_key(cand))) continue;
+  for (size_t i = 0; i < found.size(); ++i) {
+    const ContactCandidate& cand = found[i];
+    if (is_known[i]) continue;
     Contact c = make_contact(cand);
     ContactRows rows;
     linearize(c, conf, rows);

@@ -1,3 +1,4 @@
+#include <cstdlib>
 #include "sim/solver/constraint_evaluation.h"
 
 #include <algorithm>
@@ -54,6 +55,17 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   if (!frozen && slack >= -eps2 && lambda * track.w[0] < -eps2) {  // separating
     p.state = ContactState{};
     p.f.setZero();
+    p.mode_change = p.accept = true;
+    return p;
+  }
+  if (!getenv("NOLOCK") && frozen && converged && lambda * track.w[0] < -eps2) {
+    // A frozen contact that pulls on a solved system holds the others
+    // against it (a near-duplicate of an active neighbour: its lambda and
+    // the neighbour's grow without bound in opposite directions). It is
+    // let go, and kept off for the rest of the solve.
+    p.state = ContactState{};
+    p.f.setZero();
+    p.track.locked_off = true;
     p.mode_change = p.accept = true;
     return p;
   }
@@ -144,6 +156,15 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
   const int n = static_cast<int>(y.size()) - 3 * m;
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
   const Eigen::VectorXd dv = y.head(n);
+  // The most negative normal slack of an inactive contact, m/s: only the
+  // contacts within kActivationShare of it are switched on (header).
+  double deepest = 0.0;
+  for (int k = 0; k < m; ++k) {
+    const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
+    if (rows.nodes.empty() || problem.states[static_cast<size_t>(k)].mode != ContactMode::inactive) continue;
+    if (tracks[static_cast<size_t>(k)].locked_off) continue;
+    deepest = std::min(deepest, rows_times(rows, dv)[0] - rows.rhs_normal);
+  }
   int changed = 0;
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
@@ -158,7 +179,7 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
     Proposal p{s, f, track, false, false};
     if (s.mode == ContactMode::inactive) {
       // Activation is allowed even past max_flips: freezing happens in the active state.
-      if (slack < -eps2) {  // penetrating: activate with kinetic friction
+      if (slack < -eps2 && slack <= (getenv("NOSHARE") ? 0.0 : kActivationShare) * deepest && !track.locked_off) {  // penetrating: activate, sliding
         p.state.mode = ContactMode::sliding;
         p.state.lambda_kinetic = 0.0;
         const double speed = u.norm();

@@ -111,15 +111,7 @@ TEST(ContactValidation, RigidBoxStackStands) {
   EXPECT_LT(penetration, 0.002);
 }
 
-// Disabled (issue #5): between two jelly cubes the contact solve does not
-// converge -- about 400 candidates, 100-270 active and nearly all sliding,
-// the iteration cap reached every step. pgs does not converge either (it
-// ends closer, KKT 0.06 m/s against 300), so the contact set is the first
-// suspect: two face grids that coincide vertex for vertex, then drift apart
-// by fractions of a millimetre, give many nearly equal rows with slightly
-// different right-hand sides on few lattice nodes. The cubes still stand
-// (drift 13-19 mm in 5 s) but penetrate up to 21 mm.
-TEST(ContactValidation, DISABLED_JellyStackStands) {
+TEST(ContactValidation, JellyStackStands) {
   const double dt = 0.01, size = 0.1;
   World world(jelly_stack(3, size, 3, dt));
   const double penetration = run(world, steps(5.0, dt));

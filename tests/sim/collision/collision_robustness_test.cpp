@@ -2,11 +2,14 @@
 // (parallel edges, coplanar faces, a vertex on an edge, zero-area triangles).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <iostream>
 
 #include "sim/collision/brute_force.h"
 #include "sim/collision/collision_detector.h"
 #include "sim/collision/embree_scene.h"
+#include "sim/geometry/primitives.h"
 #include "tests/sim/collision/collision_candidate_checks.h"
 #include "tests/sim/collision/collision_test_meshes.h"
 
@@ -130,6 +133,38 @@ TEST(CollisionRobustness, ParallelEdgesAndCoplanarFaces) {
     EXPECT_EQ(vertex_candidates, 4) << "separation " << separation;
     std::cout << "separation " << separation << ": " << found.size() << " candidates\n";
   }
+}
+
+TEST(CollisionRobustness, NearlyCoincidentGridsGiveOneContactPerVertexPair) {
+  // Two 10 cm boxes with 3x3 face grids, the upper 0.2 mm above the lower and
+  // each of its vertices nudged sideways by up to 5 microns (a jelly cube
+  // resting on another after a few steps). Every vertex of the facing grids
+  // is near a vertex of the other; before the contact reduction this gave
+  // up to six nearly equal rows per pair (narrowly different weights and
+  // normals) and edge-edge rows between the parallel grid lines, and the
+  // contact solve never converged. One contact per pair of the 4 x 4
+  // facing vertices, all along the vertical.
+  const TriMesh lower = make_box(Eigen::Vector3d::Constant(0.1), 3);
+  TriMesh upper = lower;
+  for (Eigen::Index i = 0; i < upper.vertices.rows(); ++i) {
+    upper.vertices(i, 0) += 5e-6 * static_cast<double>(i % 3 - 1);
+    upper.vertices(i, 1) += 5e-6 * static_cast<double>(i % 2) + 0.1002;
+  }
+  const auto found = detect_checked({moving_surface(lower, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero()),
+                                     moving_surface(upper, 2, SurfaceKind::deformable, Eigen::Vector3d::Zero())},
+                                    {}, 0.002);
+  int vertex_candidates = 0, edge_candidates = 0;
+  double worst_tilt = 0.0;
+  for (const ContactCandidate& c : found) {
+    vertex_candidates += c.kind == ContactKind::vertex_triangle;
+    edge_candidates += c.kind == ContactKind::edge_edge;
+    worst_tilt = std::max(worst_tilt, std::acos(std::min(1.0, std::abs(c.normal.y()))));
+  }
+  std::cout << "nearly coincident grids: " << vertex_candidates << " vertex-triangle, " << edge_candidates
+            << " edge-edge candidates, largest normal tilt " << worst_tilt << " rad\n";
+  EXPECT_EQ(vertex_candidates, 16);
+  EXPECT_EQ(edge_candidates, 0);
+  EXPECT_LT(worst_tilt, 0.05);
 }
 
 TEST(CollisionRobustness, VertexExactlyOnAnEdge) {

@@ -1,0 +1,155 @@
+#include "sim/collision/candidate_reduction.h"
+
+#include <algorithm>
+#include <array>
+#include <map>
+#include <optional>
+#include <set>
+#include <tuple>
+
+namespace recoil::sim {
+namespace {
+
+using Side = std::pair<int, int>;  // (surface, vertex)
+using VertexPair = std::pair<Side, Side>;
+
+double toi_or_never(const ContactCandidate& c) { return c.toi.value_or(2.0); }
+
+// The order in which one vertex's candidates are considered: the earliest
+// impact, then the smallest gap, then the lowest triangle id.
+bool stronger(const ContactCandidate& l, const ContactCandidate& r) {
+  return std::make_tuple(toi_or_never(l), l.gap, l.primitive_b) < std::make_tuple(toi_or_never(r), r.gap, r.primitive_b);
+}
+
+// The vertex a closest point sits at (all its weight there), or none.
+std::optional<int> at_vertex(const SurfacePoint& p) {
+  for (int i = 0; i < p.count; ++i)
+    if (p.weight[i] == 1.0) return p.vertex[i];
+  return std::nullopt;
+}
+
+// A vertex-triangle candidate's two vertices, ordered, when its closest
+// point on B sits at a vertex. `flipped`: side A is the second of the pair,
+// so the normal as seen from the first is -normal.
+std::optional<VertexPair> vertex_pair(const ContactCandidate& c, bool& flipped) {
+  if (c.kind != ContactKind::vertex_triangle) return std::nullopt;
+  const std::optional<int> w = at_vertex(c.b);
+  if (!w) return std::nullopt;
+  const Side mine{c.surface_a, c.primitive_a}, theirs{c.surface_b, *w};
+  flipped = theirs < mine;
+  return flipped ? VertexPair{theirs, mine} : VertexPair{mine, theirs};
+}
+
+auto vertex_group(const ContactCandidate& c) { return std::make_tuple(c.surface_a, c.primitive_a, c.surface_b); }
+
+// Where on B a vertex-triangle candidate touches: the vertices with a
+// non-zero weight (a vertex, an edge or the triangle's interior), sorted,
+// unused entries -1.
+std::array<int, 3> touched_feature(const SurfacePoint& b) {
+  std::array<int, 3> feature = {-1, -1, -1};
+  int n = 0;
+  for (int i = 0; i < b.count; ++i)
+    if (b.weight[i] != 0.0) feature[static_cast<size_t>(n++)] = b.vertex[i];
+  // Insertion sort by hand: std::sort on three elements trips GCC 12's -Warray-bounds.
+  for (int i = 1; i < n; ++i)
+    for (int j = i; j > 0 && feature[static_cast<size_t>(j)] < feature[static_cast<size_t>(j - 1)]; --j)
+      std::swap(feature[static_cast<size_t>(j)], feature[static_cast<size_t>(j - 1)]);
+  return feature;
+}
+
+// Rule 1 (candidate_reduction.h): per (surface A, vertex, surface B, touched
+// feature of B), the strongest candidate and those whose normals point
+// elsewhere.
+std::vector<ContactCandidate> one_per_feature(std::vector<ContactCandidate> vertex_triangle) {
+  auto group = [](const ContactCandidate& c) { return std::make_tuple(vertex_group(c), touched_feature(c.b)); };
+  std::sort(vertex_triangle.begin(), vertex_triangle.end(), [&](const ContactCandidate& l, const ContactCandidate& r) {
+    if (group(l) != group(r)) return group(l) < group(r);
+    return stronger(l, r);
+  });
+  std::vector<ContactCandidate> kept;
+  size_t group_start = 0;  // first kept candidate of the current group
+  for (size_t i = 0; i < vertex_triangle.size(); ++i) {
+    ContactCandidate& c = vertex_triangle[i];
+    if (i == 0 || group(c) != group(vertex_triangle[i - 1])) group_start = kept.size();
+    const bool distinct =
+        std::all_of(kept.begin() + static_cast<std::ptrdiff_t>(group_start), kept.end(),
+                    [&](const ContactCandidate& k) { return k.normal.dot(c.normal) < kDistinctNormalCos; });
+    if (distinct) kept.push_back(std::move(c));
+  }
+  return kept;
+}
+
+// Rule 2: a pair of vertices found from both sides is kept once.
+std::vector<ContactCandidate> one_per_vertex_pair(std::vector<ContactCandidate> candidates) {
+  std::map<VertexPair, size_t> seen;  // vertex pair -> index of the kept candidate
+  std::vector<char> keep(candidates.size(), 1);
+  for (size_t i = 0; i < candidates.size(); ++i) {
+    const ContactCandidate& c = candidates[i];
+    bool flipped = false;
+    const std::optional<VertexPair> pair = vertex_pair(c, flipped);
+    if (!pair) continue;
+    const auto [it, inserted] = seen.try_emplace(*pair, i);
+    if (inserted) continue;
+    const ContactCandidate& other = candidates[it->second];
+    // The same constraint seen from the other side has the opposite normal;
+    // a pair meeting at an angle stays two contacts.
+    if (-other.normal.dot(c.normal) < kDistinctNormalCos) continue;
+    // Inputs arrive sorted by (surface A, vertex): on equal impact times the
+    // earlier one, with the smaller side A, wins.
+    if (toi_or_never(c) < toi_or_never(other)) {
+      keep[it->second] = 0;
+      it->second = i;
+    } else {
+      keep[i] = 0;
+    }
+  }
+  std::vector<ContactCandidate> out;
+  for (size_t i = 0; i < candidates.size(); ++i)
+    if (keep[i]) out.push_back(std::move(candidates[i]));
+  return out;
+}
+
+}  // namespace
+
+void finalize_candidates(std::vector<ContactCandidate>& candidates) {
+  std::vector<ContactCandidate> others, vertex_triangle;
+  for (ContactCandidate& c : candidates)
+    (c.kind == ContactKind::vertex_triangle ? vertex_triangle : others).push_back(std::move(c));
+  candidates = std::move(others);
+  for (ContactCandidate& c : one_per_vertex_pair(one_per_feature(std::move(vertex_triangle))))
+    candidates.push_back(std::move(c));
+  std::sort(candidates.begin(), candidates.end(), candidate_less);
+}
+
+std::vector<char> already_known(const std::vector<ContactCandidate>& known, const std::vector<ContactCandidate>& found) {
+  auto primitives_of = [](const ContactCandidate& c) {
+    return std::make_tuple(static_cast<int>(c.kind), c.surface_a, c.surface_b, c.primitive_a, c.primitive_b);
+  };
+  std::set<decltype(primitives_of(known.front()))> primitives;
+  std::multimap<decltype(vertex_group(known.front())), Eigen::Vector3d> vertex_normals;
+  std::multimap<VertexPair, Eigen::Vector3d> pair_normals;  // normal as seen from the pair's first side
+  for (const ContactCandidate& c : known) {
+    primitives.insert(primitives_of(c));
+    if (c.kind != ContactKind::vertex_triangle) continue;
+    vertex_normals.emplace(vertex_group(c), c.normal);
+    bool flipped = false;
+    if (const auto pair = vertex_pair(c, flipped)) pair_normals.emplace(*pair, flipped ? -c.normal : c.normal);
+  }
+  auto similar = [](const auto& range, const Eigen::Vector3d& normal) {
+    for (auto it = range.first; it != range.second; ++it)
+      if (it->second.dot(normal) >= kDistinctNormalCos) return true;
+    return false;
+  };
+  std::vector<char> out(found.size(), 0);
+  for (size_t i = 0; i < found.size(); ++i) {
+    const ContactCandidate& c = found[i];
+    bool flipped = false;
+    const std::optional<VertexPair> pair = vertex_pair(c, flipped);
+    out[i] = primitives.count(primitives_of(c)) > 0 ||
+             (c.kind == ContactKind::vertex_triangle && similar(vertex_normals.equal_range(vertex_group(c)), c.normal)) ||
+             (pair && similar(pair_normals.equal_range(*pair), flipped ? Eigen::Vector3d(-c.normal) : c.normal));
+  }
+  return out;
+}
+
+}  // namespace recoil::sim
