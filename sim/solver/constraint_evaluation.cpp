@@ -1,4 +1,3 @@
-#include <cstdlib>
 #include "sim/solver/constraint_evaluation.h"
 
 #include <algorithm>
@@ -58,7 +57,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
     p.mode_change = p.accept = true;
     return p;
   }
-  if (!getenv("NOLOCK") && frozen && converged && lambda * track.w[0] < -eps2) {
+  if (frozen && converged && lambda * track.w[0] < -eps2) {
     // A frozen contact that pulls on a solved system holds the others
     // against it (a near-duplicate of an active neighbour: its lambda and
     // the neighbour's grow without bound in opposite directions). It is
@@ -179,7 +178,7 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
     Proposal p{s, f, track, false, false};
     if (s.mode == ContactMode::inactive) {
       // Activation is allowed even past max_flips: freezing happens in the active state.
-      if (slack < -eps2 && slack <= (getenv("NOSHARE") ? 0.0 : kActivationShare) * deepest && !track.locked_off) {  // penetrating: activate, sliding
+      if (slack < -eps2 && slack <= kActivationShare * deepest && !track.locked_off) {  // penetrating: activate, sliding
         p.state.mode = ContactMode::sliding;
         p.state.lambda_kinetic = 0.0;
         const double speed = u.norm();
