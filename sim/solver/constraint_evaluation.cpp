@@ -139,8 +139,14 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
     }
   }
   // The impulse change as a velocity: of lambda' (even while the slip is
-  // undirected, so lambda' tracks lambda) and of the full turn.
-  const double magnitude_change = rows.mu_kinetic * std::abs(p.state.lambda_kinetic - s.lambda_kinetic);
+  // undirected, so lambda' tracks lambda) and, as for the direction, of the
+  // whole way from lambda' to lambda: the window moves lambda' by a third
+  // of (lambda - oldest sample) per evaluation, which can stay below
+  // epsilon_2 while lambda' is still off (the rollers' first step ended
+  // "converged" with a Coulomb error of 1.5e-4 m/s).
+  const double magnitude_change =
+      rows.mu_kinetic * std::max(std::abs(p.state.lambda_kinetic - s.lambda_kinetic),
+                                 std::abs(std::max(lambda, 0.0) - s.lambda_kinetic));
   const double turn_change = rows.mu_kinetic * p.state.lambda_kinetic * full_turn;
   p.accept = std::max(magnitude_change, turn_change) * w_t > eps2 ||
              (undirected && p.state.slip.squaredNorm() > 0.0);
