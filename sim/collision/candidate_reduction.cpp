@@ -50,7 +50,8 @@ std::array<int, 3> touched_feature(const SurfacePoint& b) {
   int n = 0;
   for (int i = 0; i < b.count; ++i)
     if (b.weight[i] != 0.0) feature[static_cast<size_t>(n++)] = b.vertex[i];
-  // Insertion sort by hand: std::sort on three elements trips GCC 12's -Warray-bounds.
+  // Insertion sort by hand: std::sort over the first n entries of a
+  // three-element array trips GCC 12's -Warray-bounds.
   for (int i = 1; i < n; ++i)
     for (int j = i; j > 0 && feature[static_cast<size_t>(j)] < feature[static_cast<size_t>(j - 1)]; --j)
       std::swap(feature[static_cast<size_t>(j)], feature[static_cast<size_t>(j - 1)]);
@@ -79,26 +80,32 @@ std::vector<ContactCandidate> one_per_feature(std::vector<ContactCandidate> vert
   return kept;
 }
 
-// Rule 2: a pair of vertices found from both sides is kept once.
+// Rule 2: a pair of vertices found from both sides is kept once. Rule 1 may
+// keep a vertex's candidates in several directions, so each is compared
+// with every kept candidate of its pair.
 std::vector<ContactCandidate> one_per_vertex_pair(std::vector<ContactCandidate> candidates) {
-  std::map<VertexPair, size_t> seen;  // vertex pair -> index of the kept candidate
+  std::map<VertexPair, std::vector<size_t>> seen;  // vertex pair -> indices of its kept candidates
   std::vector<char> keep(candidates.size(), 1);
   for (size_t i = 0; i < candidates.size(); ++i) {
     const ContactCandidate& c = candidates[i];
     bool flipped = false;
     const std::optional<VertexPair> pair = vertex_pair(c, flipped);
     if (!pair) continue;
-    const auto [it, inserted] = seen.try_emplace(*pair, i);
-    if (inserted) continue;
-    const ContactCandidate& other = candidates[it->second];
+    std::vector<size_t>& kept = seen[*pair];
     // The same constraint seen from the other side has the opposite normal;
     // a pair meeting at an angle stays two contacts.
-    if (-other.normal.dot(c.normal) < kDistinctNormalCos) continue;
+    const auto same = std::find_if(kept.begin(), kept.end(), [&](size_t j) {
+      return -candidates[j].normal.dot(c.normal) >= kDistinctNormalCos;
+    });
+    if (same == kept.end()) {
+      kept.push_back(i);
+      continue;
+    }
     // Inputs arrive sorted by (surface A, vertex): on equal impact times the
     // earlier one, with the smaller side A, wins.
-    if (toi_or_never(c) < toi_or_never(other)) {
-      keep[it->second] = 0;
-      it->second = i;
+    if (toi_or_never(c) < toi_or_never(candidates[*same])) {
+      keep[*same] = 0;
+      *same = i;
     } else {
       keep[i] = 0;
     }
@@ -122,11 +129,12 @@ void finalize_candidates(std::vector<ContactCandidate>& candidates) {
 }
 
 std::vector<char> already_known(const std::vector<ContactCandidate>& known, const std::vector<ContactCandidate>& found) {
+  using Primitives = std::tuple<int, int, int, int, int>;  // (kind, surface A, surface B, primitive A, primitive B)
   auto primitives_of = [](const ContactCandidate& c) {
-    return std::make_tuple(static_cast<int>(c.kind), c.surface_a, c.surface_b, c.primitive_a, c.primitive_b);
+    return Primitives{static_cast<int>(c.kind), c.surface_a, c.surface_b, c.primitive_a, c.primitive_b};
   };
-  std::set<decltype(primitives_of(known.front()))> primitives;
-  std::multimap<decltype(vertex_group(known.front())), Eigen::Vector3d> vertex_normals;
+  std::set<Primitives> primitives;
+  std::multimap<std::tuple<int, int, int>, Eigen::Vector3d> vertex_normals;  // (surface A, vertex, surface B)
   std::multimap<VertexPair, Eigen::Vector3d> pair_normals;  // normal as seen from the pair's first side
   for (const ContactCandidate& c : known) {
     primitives.insert(primitives_of(c));

@@ -41,10 +41,11 @@ inline constexpr double kDistinctNormalCos = 0.9;
 void finalize_candidates(std::vector<ContactCandidate>& candidates);
 
 // For each candidate of `found`, whether one of `known` already describes
-// that contact by the rules above (the same vertex against the same surface
-// in a similar direction, the same pair of vertices seen from the other
-// side, or the same pair of primitives): what the contact solver's mid-solve
-// search for new collisions must not add a second time.
+// that contact: the same vertex against the same surface in a similar
+// direction (whatever the feature: a looser test than rule 1, since that
+// vertex is already held that way), the same pair of vertices seen from the
+// other side, or the same pair of primitives. What the contact solver's
+// mid-solve search for new collisions must not add a second time.
 std::vector<char> already_known(const std::vector<ContactCandidate>& known, const std::vector<ContactCandidate>& found);
 
 }  // namespace recoil::sim

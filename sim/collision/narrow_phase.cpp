@@ -4,7 +4,6 @@
 #include <cmath>
 
 #include "core/check.h"
-#include "sim/collision/candidate_reduction.h"
 #include "sim/collision/ccd.h"
 #include "sim/collision/exact_distance.h"
 
@@ -62,29 +61,30 @@ Eigen::Vector3d lerp(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, doubl
 // A closest point this close to an edge or vertex of the triangle is taken
 // to be on it (candidate_reduction.h): as a share of the contact margin.
 constexpr double kFeatureSnapShare = 0.1;
-// Edges whose directions' sine is below this (about 3 degrees) are parallel.
-constexpr double kParallelEdgeSine = 0.05;
 
 // Zeroes the smallest weights of a closest point q on triangle t while the
-// point moves by less than `reach` in all (each weight w_i moves q by about
-// w_i |x_i - q|), then renormalises. A vertex a few microns off a
-// neighbour's vertex or edge names that vertex or edge: the same feature
-// from every triangle around it, so the reduction keeps one contact.
-std::array<double, 3> snap_to_feature(std::array<double, 3> w, const std::array<Eigen::Vector3d, 3>& t, double reach) {
-  const Eigen::Vector3d q = w[0] * t[0] + w[1] * t[1] + w[2] * t[2];
-  std::array<int, 3> order = {0, 1, 2};
-  std::sort(order.begin(), order.end(), [&](int l, int r) { return w[static_cast<size_t>(l)] < w[static_cast<size_t>(r)]; });
-  double moved = 0.0;
-  for (int i = 0; i < 2; ++i) {  // the largest weight always stays
-    const size_t k = static_cast<size_t>(order[static_cast<size_t>(i)]);
-    const double shift = w[k] * (t[k] - q).norm();
-    if (moved + shift >= reach) break;
-    moved += shift;
-    w[k] = 0.0;
+// snapped point stays within `reach` of q, then renormalises (the largest
+// weight always stays). A vertex a few microns off a neighbour's vertex or
+// edge names that vertex or edge: the same feature from every triangle
+// around it, so the reduction keeps one contact.
+std::array<double, 3> snap_to_feature(const std::array<double, 3>& w, const std::array<Eigen::Vector3d, 3>& t,
+                                      double reach) {
+  auto point = [&](const std::array<double, 3>& v) { return v[0] * t[0] + v[1] * t[1] + v[2] * t[2]; };
+  const Eigen::Vector3d q = point(w);
+  std::array<int, 3> order = {0, 1, 2};  // by weight, then index: the same on every standard library
+  std::sort(order.begin(), order.end(), [&](int l, int r) {
+    return std::make_pair(w[static_cast<size_t>(l)], l) < std::make_pair(w[static_cast<size_t>(r)], r);
+  });
+  std::array<double, 3> snapped = w;
+  for (int i = 0; i < 2; ++i) {
+    std::array<double, 3> next = snapped;
+    next[static_cast<size_t>(order[static_cast<size_t>(i)])] = 0.0;
+    const double sum = next[0] + next[1] + next[2];
+    for (double& wi : next) wi /= sum;
+    if ((point(next) - q).norm() >= reach) break;
+    snapped = next;
   }
-  const double sum = w[0] + w[1] + w[2];
-  for (double& wi : w) wi /= sum;
-  return w;
+  return snapped;
 }
 
 bool on_triangle_boundary(const std::array<double, 3>& w) { return w[0] == 0.0 || w[1] == 0.0 || w[2] == 0.0; }
@@ -196,17 +196,24 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
 
   Eigen::Vector3d feature = Eigen::Vector3d::Zero();
   const double reach = kFeatureSnapShare * margin + tol;
+  SurfacePoint exact = c.b;  // the true closest point: the normal and gap come from it
   if (c.toi) {
     // Weights and normal where the vertex meets the triangle.
     const double s = *c.toi;
     const Eigen::Vector3d ta = lerp(t0[0], t1[0], s), tb = lerp(t0[1], t1[1], s), tc = lerp(t0[2], t1[2], s);
-    c.b.weight = snap_to_feature(closest_point_on_triangle(lerp(p0, p1, s), ta, tb, tc).weight, {ta, tb, tc}, reach);
+    exact.weight = closest_point_on_triangle(lerp(p0, p1, s), ta, tb, tc).weight;
+    c.b.weight = snap_to_feature(exact.weight, {ta, tb, tc}, reach);
     feature = face_normal(ta, tb, tc);
   } else {
-    c.b.weight = snap_to_feature(closest.weight, t0, reach);
+    exact.weight = closest.weight;
+    c.b.weight = snap_to_feature(exact.weight, t0, reach);
     feature = face_normal(t0[0], t0[1], t0[2]);
   }
-  const Eigen::Vector3d q0 = c.b.evaluate(sb.x0), q1 = c.b.evaluate(sb.x1);
+  // The snapped weights name the feature and carry the rows (and the gap);
+  // the normal uses the exact point, since a snap of up to margin/10
+  // sideways would tilt the normal of a contact resting margin/10 apart by
+  // up to 45 degrees.
+  const Eigen::Vector3d q0 = exact.evaluate(sb.x0), q1 = exact.evaluate(sb.x1);
   const Eigen::Vector3d sep0 = p0 - q0, rel = (p1 - q1) - sep0;
   const bool touching_at_start = sep0.norm() <= tol;
   // Touching at the start on an edge or vertex of this triangle: its face
@@ -217,7 +224,7 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   if (touching_at_start && on_triangle_boundary(c.b.weight) && !(feature.dot(rel) < 0.0)) return std::nullopt;
   const bool touching = c.toi.has_value() || touching_at_start;
   c.normal = choose_normal(touching, sep0, feature, /*outward=*/true, rel, tol);
-  c.gap = c.normal.dot(sep0);
+  c.gap = c.normal.dot(p0 - c.b.evaluate(sb.x0));  // with the weights the rows use (collision_types.h)
   return c;
 }
 
@@ -260,7 +267,13 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const double reach = kFeatureSnapShare * margin + tol;
   auto near_end = [&](double s, double length) { return std::min(s, 1.0 - s) * length < reach; };
   if (near_end(closest.s, da.norm()) || near_end(closest.t, db.norm())) return std::nullopt;
-  if (feature.norm() < kParallelEdgeSine * da.norm() * db.norm()) return std::nullopt;
+  // Parallel to within the margin over the longer edge's length: the ends
+  // stay within the margin of the other edge, and their vertex-triangle
+  // candidates hold the pair, whereas the edges' own closest points could
+  // be anywhere along the overlap. Edges crossing at a small angle but
+  // drifting apart by more than the margin stay edge-edge candidates.
+  const double sine = feature.norm() / (da.norm() * db.norm());
+  if (!(sine * std::max(da.norm(), db.norm()) >= margin)) return std::nullopt;
 
   ContactCandidate c;
   c.kind = ContactKind::edge_edge;

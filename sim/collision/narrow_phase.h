@@ -14,11 +14,13 @@
 // - edge e (A) / edge f (B): dist(e, f) <= margin + d(e) + d(f) at x0 and x1, the
 //   closest points (at the impact, if the continuous check found one) lie
 //   more than margin/10 from both edges' ends, and the edges are not
-//   parallel (the sine of their angle is at least 0.05, about 3 degrees).
+//   parallel to within the margin (sine of their angle times the longer
+//   edge's length at least the margin).
 //   A closest point at an end is a vertex, already a vertex-triangle
 //   candidate with the edge as its feature; parallel edges that overlap have
-//   an end of one over the other, and that vertex holds them, whereas their
-//   own closest points could be anywhere along the overlap.
+//   an end of one within the margin of the other, and that vertex holds
+//   them, whereas their own closest points could be anywhere along the
+//   overlap.
 // - vertex v / plane: min(signed distance at x0, at x1) <= margin.
 // Self-contact drops a vertex against the triangles of its one-ring and
 // edges sharing a vertex. Pairs of two prescribed (static or kinematic)
@@ -27,8 +29,9 @@
 // Closest-point weights: a vertex-triangle closest point on an edge or vertex
 // of the triangle has zero weights elsewhere, and one within margin/10 of an
 // edge or vertex is moved onto it (the smallest weights are zeroed while
-// the point moves less than that). The detector then reduces the candidates
-// (candidate_reduction.h): one per vertex and direction, one per pair of
+// the point moves less than that); the normal still comes from the exact
+// point. The detector then reduces the candidates
+// (candidate_reduction.h): one per vertex and touched feature, one per pair of
 // vertices found from both sides.
 //
 // Normal (from q on B to p on A): (p - q)/|p - q| while the points are apart

@@ -78,14 +78,17 @@ void reset_lambda_window(ContactTrack& track, double lambda_kinetic);
 // again to 82, and the active set cycled until the iteration cap. The
 // deepest first (then the next deepest, solve by solve) reached the
 // 6-contact solution; a body landing flat still switches all its equally
-// deep contacts on at once.
+// deep contacts on at once. The deepest is taken over the whole problem, so
+// a deep contact on one body holds back shallow ones elsewhere for an
+// evaluation or two.
 // Contacts past `max_flips` mode changes are frozen in the active state:
 // an inactive one may still activate, an active one keeps its friction
 // mode and does not separate mid-solve. One frozen contact that pulls
 // (lambda < -epsilon_2) on a converged system is switched off and stays off
 // for the rest of the solve: held on, it was a near-duplicate of a sliding
 // neighbour whose lambda grew against it without bound (bunny pile: +8 and
-// -9 N s after 3000 iterations), and the step blew up.
+// -9 N s after 3000 iterations), and the step blew up. If it penetrates at
+// the end, the solve reports itself unconverged.
 // Friction mode changes and Algorithm 3 run only when `converged` (y solves
 // the current system): lambda' and the slip direction are a fixed-point
 // iteration over whole solves, and feeding it the half-converged u of

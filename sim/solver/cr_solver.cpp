@@ -438,6 +438,10 @@ void CrSolver::run(Eigen::VectorXd& dv) {
     const ContactTrack& track = m_tracks[static_cast<size_t>(k)];
     if (s.mode == ContactMode::inactive) {
       s = ContactState{};
+      // Let go for pulling while frozen, and penetrating now: not a solution.
+      const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
+      if (track.locked_off && rows_times(rows, dv)[0] - rows.rhs_normal < -m_settings.constraint_tolerance)
+        m_stats.converged = false;
       continue;
     }
     s.lambda = m_y[m_n + 3 * k];

@@ -162,7 +162,7 @@ TEST(ContactValidation, DeterministicAcrossRuns) {
 }
 
 // Disabled (issue #5): the first bunny's landing converges every step, the
-// second's does not (steps 23-26: 2 of 4 unconverged, KKT up to 0.13 m/s,
+// second's does not (steps 23-26: 1-2 of 4 unconverged, worst KKT 0.01-9 m/s,
 // `recoil_bench contact`); coupled sliding contacts on the coarse lattice
 // turn their slip directions a little per whole solve, and the restarts
 // reach the iteration cap. Nothing blows up, but by step 55 there are
