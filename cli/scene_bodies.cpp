@@ -4,6 +4,7 @@
 #include <cmath>
 #include <map>
 #include <numbers>
+#include <optional>
 
 #include "core/error.h"
 #include "sim/geometry/boundary.h"
@@ -149,7 +150,8 @@ auto load_geometry(const JsonCursor& c, F&& read) {
 
 struct Geometry {
   sim::TriMesh surface;
-  sim::TetMesh tets;  // when the mesh file is tetrahedral
+  sim::TetMesh tets;                    // when the mesh file is tetrahedral
+  std::optional<Eigen::Vector3d> box;   // a box primitive's edge lengths, m
 };
 
 // Mesh files already read while parsing one scene, by resolved path: a
@@ -163,6 +165,7 @@ Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir, MeshFi
   Geometry g;
   if (primitive) {
     g.surface = parse_primitive(body.child("primitive"));
+    if (body.child("primitive").has("box")) g.box = body.child("primitive").child("box").vec3();
     return g;
   }
   const JsonCursor c = body.child("mesh");
@@ -289,6 +292,10 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     } else if (d.tets.empty()) {
       body.child_or_empty("tets").integer_or("resolution", d.resolution);
     }
+    // A deformable box's faces get a grid of the lattice's spacing: with its
+    // 8 corners only, a face is held at its corners and sags through what it
+    // rests on (the jelly cubes of the validation tests did).
+    if (geometry.box && d.tets.empty()) d.mesh = sim::make_box(*geometry.box, d.resolution);
     if (body.has("pinned")) {
       const JsonCursor p = body.child("pinned");
       p.expect_object({"min", "max"});
