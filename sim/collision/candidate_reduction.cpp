@@ -129,15 +129,11 @@ void finalize_candidates(std::vector<ContactCandidate>& candidates) {
 }
 
 std::vector<char> already_known(const std::vector<ContactCandidate>& known, const std::vector<ContactCandidate>& found) {
-  using Primitives = std::tuple<int, int, int, int, int>;  // (kind, surface A, surface B, primitive A, primitive B)
-  auto primitives_of = [](const ContactCandidate& c) {
-    return Primitives{static_cast<int>(c.kind), c.surface_a, c.surface_b, c.primitive_a, c.primitive_b};
-  };
-  std::set<Primitives> primitives;
+  std::set<CandidateKey> primitives;
   std::multimap<std::tuple<int, int, int>, Eigen::Vector3d> vertex_normals;  // (surface A, vertex, surface B)
   std::multimap<VertexPair, Eigen::Vector3d> pair_normals;  // normal as seen from the pair's first side
   for (const ContactCandidate& c : known) {
-    primitives.insert(primitives_of(c));
+    primitives.insert(candidate_key(c));
     if (c.kind != ContactKind::vertex_triangle) continue;
     vertex_normals.emplace(vertex_group(c), c.normal);
     bool flipped = false;
@@ -153,7 +149,7 @@ std::vector<char> already_known(const std::vector<ContactCandidate>& known, cons
     const ContactCandidate& c = found[i];
     bool flipped = false;
     const std::optional<VertexPair> pair = vertex_pair(c, flipped);
-    out[i] = primitives.count(primitives_of(c)) > 0 ||
+    out[i] = primitives.count(candidate_key(c)) > 0 ||
              (c.kind == ContactKind::vertex_triangle && similar(vertex_normals.equal_range(vertex_group(c)), c.normal)) ||
              (pair && similar(pair_normals.equal_range(*pair), flipped ? Eigen::Vector3d(-c.normal) : c.normal));
   }

@@ -79,13 +79,15 @@ struct ContactCandidate {
   std::optional<double> toi;           // first contact time as a step fraction, if any
 };
 
-// The deterministic order of candidate lists: kind, surfaces, primitives.
+// A candidate's identity: kind, surfaces, primitives. Orders candidate
+// lists deterministically and keys a contact from one step to the next.
+using CandidateKey = std::array<int, 5>;
+inline CandidateKey candidate_key(const ContactCandidate& c) {
+  return {static_cast<int>(c.kind), c.surface_a, c.surface_b, c.primitive_a, c.primitive_b};
+}
+
 inline bool candidate_less(const ContactCandidate& l, const ContactCandidate& r) {
-  auto key = [](const ContactCandidate& c) {
-    return std::array<int, 5>{static_cast<int>(c.kind), c.surface_a, c.surface_b, c.primitive_a,
-                              c.primitive_b};
-  };
-  return key(l) < key(r);
+  return candidate_key(l) < candidate_key(r);
 }
 
 }  // namespace recoil::sim

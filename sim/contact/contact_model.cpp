@@ -33,11 +33,7 @@ void rebase_state(ContactState& s, const Eigen::Vector3d& t1o, const Eigen::Vect
 
 }  // namespace
 
-ContactKey contact_key(const ContactCandidate& c) {
-  return {static_cast<int>(c.kind), c.surface_a, c.surface_b, c.primitive_a, c.primitive_b};
-}
-
-ContactState ContactMemory::recall(const ContactKey& key, const Eigen::Vector3d& t1, const Eigen::Vector3d& t2) const {
+ContactState ContactMemory::recall(const CandidateKey& key, const Eigen::Vector3d& t1, const Eigen::Vector3d& t2) const {
   const auto it = m_entries.find(key);
   if (it == m_entries.end()) return ContactState{};
   ContactState s = it->second.state;
@@ -189,7 +185,7 @@ void ContactModel::build(const std::vector<ContactCandidate>& candidates, const 
     Contact c = make_contact(cand);
     ContactRows rows;
     linearize(c, conf, rows);
-    problem.states.push_back(memory.recall(contact_key(cand), c.t1, c.t2));
+    problem.states.push_back(memory.recall(candidate_key(cand), c.t1, c.t2));
     problem.rows.push_back(std::move(rows));
     m_contacts.push_back(std::move(c));
   }
@@ -271,7 +267,7 @@ double ContactModel::max_penetration(const Eigen::VectorXd& dv) const {
 void ContactModel::remember(const ContactProblem& problem, ContactMemory& memory) const {
   memory.clear();
   for (size_t k = 0; k < m_contacts.size(); ++k)
-    memory.store(contact_key(m_contacts[k].candidate), {problem.states[k], m_contacts[k].t1, m_contacts[k].t2});
+    memory.store(candidate_key(m_contacts[k].candidate), {problem.states[k], m_contacts[k].t1, m_contacts[k].t2});
 }
 
 }  // namespace recoil::sim

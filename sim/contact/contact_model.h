@@ -41,8 +41,6 @@ struct ContactPlane {
   double mu_static = 0.5, mu_kinetic = 0.5;
 };
 
-using ContactKey = std::array<int, 5>;  // kind, surface a, surface b, primitive a, primitive b
-ContactKey contact_key(const ContactCandidate& c);
 
 // Each contact's state at the end of a step with its tangent basis, keyed by
 // candidate identity: the warm start of the next step.
@@ -53,13 +51,13 @@ class ContactMemory {
     Eigen::Vector3d t1 = Eigen::Vector3d::Zero(), t2 = Eigen::Vector3d::Zero();
   };
   void clear() { m_entries.clear(); }
-  void store(const ContactKey& key, const Entry& entry) { m_entries[key] = entry; }
+  void store(const CandidateKey& key, const Entry& entry) { m_entries[key] = entry; }
   // The remembered state re-expressed in the basis (t1, t2); inactive when unknown.
-  ContactState recall(const ContactKey& key, const Eigen::Vector3d& t1, const Eigen::Vector3d& t2) const;
+  ContactState recall(const CandidateKey& key, const Eigen::Vector3d& t1, const Eigen::Vector3d& t2) const;
   size_t size() const { return m_entries.size(); }
 
  private:
-  std::map<ContactKey, Entry> m_entries;
+  std::map<CandidateKey, Entry> m_entries;
 };
 
 class ContactModel final : public ContactLinearization {

@@ -161,14 +161,18 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
   const int n = static_cast<int>(y.size()) - 3 * m;
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
   const Eigen::VectorXd dv = y.head(n);
-  // The most negative normal slack of an inactive contact, m/s: only the
-  // contacts within kActivationShare of it are switched on (header).
+  // J_k dv per contact (dv does not change below), and the most negative
+  // normal slack of an inactive contact, m/s: only the contacts within
+  // kActivationShare of it are switched on (header).
+  std::vector<Eigen::Vector3d> jdvs(static_cast<size_t>(m), Eigen::Vector3d::Zero());
   double deepest = 0.0;
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
-    if (rows.nodes.empty() || problem.states[static_cast<size_t>(k)].mode != ContactMode::inactive) continue;
-    if (tracks[static_cast<size_t>(k)].locked_off) continue;
-    deepest = std::min(deepest, rows_times(rows, dv)[0] - rows.rhs_normal);
+    if (rows.nodes.empty()) continue;
+    jdvs[static_cast<size_t>(k)] = rows_times(rows, dv);
+    if (problem.states[static_cast<size_t>(k)].mode != ContactMode::inactive || tracks[static_cast<size_t>(k)].locked_off)
+      continue;
+    deepest = std::min(deepest, jdvs[static_cast<size_t>(k)][0] - rows.rhs_normal);
   }
   int changed = 0;
   for (int k = 0; k < m; ++k) {
@@ -178,7 +182,7 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
     const Eigen::Vector3d f = y.segment<3>(n + 3 * k);
     if (rows.nodes.empty()) continue;  // touches only fixed DoF: nothing to solve for
     const bool frozen = track.flips >= max_flips;
-    const Eigen::Vector3d jdv = rows_times(rows, dv);
+    const Eigen::Vector3d& jdv = jdvs[static_cast<size_t>(k)];
     const double slack = jdv[0] - rows.rhs_normal;
     const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
     Proposal p{s, f, track, false, false};

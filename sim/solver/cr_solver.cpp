@@ -56,6 +56,7 @@ class CrSolver {
   void recompute_residual();
   void update_stationary();
   void restart_true();
+  void restart();
   void restart_recurrence();
   void rescue_step();
   void restart_after_change();
@@ -257,6 +258,12 @@ void CrSolver::restart_true() {
   restart_recurrence();
 }
 
+// restart_true(), counted in the stats (the first start is not a restart).
+void CrSolver::restart() {
+  ++m_stats.restarts;
+  restart_true();
+}
+
 void CrSolver::restart_recurrence() {
   apply_Cinv(m_r, m_z);
   m_p = m_z;
@@ -300,9 +307,8 @@ void CrSolver::rescue_step() {
 // describes where it will end, and convergence needs a fresh one.
 void CrSolver::restart_after_change() {
   m_relinearized_ok = false;
-  ++m_stats.restarts;
   build_rhs();
-  restart_true();
+  restart();
 }
 
 // One CR iteration (Algorithm 1 lines 9-21). Returns false when it had to
@@ -311,8 +317,7 @@ bool CrSolver::step() {
   apply_Cinv(m_q, m_t);
   const double den = m_q.dot(m_t);
   if (!(den > 0.0)) {
-    ++m_stats.restarts;
-    restart_true();
+    restart();
     return false;
   }
   const double alpha = m_rho / den;
@@ -338,8 +343,7 @@ bool CrSolver::step() {
   update_stationary();
   const double rho = m_z.dot(m_bz);
   if (std::abs(rho) <= kBreakdown * m_z.norm() * m_bz.norm()) {
-    ++m_stats.restarts;
-    restart_true();
+    restart();
     return false;
   }
   const double beta = rho / m_rho;
@@ -356,8 +360,7 @@ bool CrSolver::step() {
 // any further change; at the re-linearisation cap the solve ends unconverged.
 CrSolver::Finish CrSolver::finish_or_continue() {
   if (!m_residual_true) {
-    ++m_stats.restarts;
-    restart_true();
+    restart();
     return Finish::go_on;
   }
   const double eps2 = m_settings.constraint_tolerance;
@@ -385,8 +388,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   // barely moved: solve again on the recomputed residual before returning.
   refresh_rows();
   build_rhs();
-  ++m_stats.restarts;
-  restart_true();
+  restart();
   return Finish::go_on;
 }
 
