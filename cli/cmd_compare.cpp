@@ -11,6 +11,7 @@
 
 #include "cli/commands.h"
 #include "cli/file_io.h"
+#include "cli/format_number.h"
 #include "cli/compare_pairs.h"
 #include "cli/compare_report.h"
 #include "cli/progress.h"
@@ -31,19 +32,13 @@ struct CompareOptions {
   bool update = false;
 };
 
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
-}
-
 void print_table(const std::vector<PairResult>& results, const PairPlan& plan, const CompareOptions& options,
                  bool pass) {
   std::printf("%-7s %10s %9s %8s %8s  %s\n", "status", "failing", "max diff", "PSNR dB", "SSIM", "frame");
   for (const PairResult& r : results) {
     const render::ImageComparison& m = r.metrics;
     std::printf("%-7s %9.4f%% %9.4f %8s %8.5f  %s\n", r.pass ? "pass" : "FAIL", m.failing_fraction * 100.0,
-                m.max_difference, m.psnr ? format("%.2f", *m.psnr).c_str() : "inf", m.ssim,
+                m.max_difference, m.psnr ? format_number("%.2f", *m.psnr).c_str() : "inf", m.ssim,
                 pair_label(r, plan.directory_mode).c_str());
   }
   for (const fs::path& p : plan.missing) std::printf("%-7s %48s  %s\n", "MISSING", "", p.filename().c_str());

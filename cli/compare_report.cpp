@@ -5,6 +5,7 @@
 #include <ostream>
 
 #include "cli/file_io.h"
+#include "cli/format_number.h"
 #include "core/check.h"
 #include "render/png.h"
 
@@ -26,12 +27,6 @@ std::string html_escape(const std::string& text) {
     }
   }
   return out;
-}
-
-std::string format(const char* pattern, double value) {
-  char buffer[64];
-  std::snprintf(buffer, sizeof buffer, pattern, value);
-  return buffer;
 }
 
 const char* style_sheet = R"(
@@ -78,9 +73,9 @@ void write_index(std::ostream& out, const std::vector<PairResult>& results, bool
     const PairResult& r = results[index];
     const render::ImageComparison& m = r.metrics;
     out << "<tr class=\"" << (r.pass ? "pass" : "fail") << "\"><td><span class=\"verdict\">"
-        << (r.pass ? "pass" : "FAIL") << "</span></td><td>" << format("%.4f", m.failing_fraction * 100.0)
-        << "</td><td>" << format("%.4f", m.max_difference) << "</td><td>"
-        << (m.psnr ? format("%.2f", *m.psnr) : std::string("&infin;")) << "</td><td>" << format("%.5f", m.ssim)
+        << (r.pass ? "pass" : "FAIL") << "</span></td><td>" << format_number("%.4f", m.failing_fraction * 100.0)
+        << "</td><td>" << format_number("%.4f", m.max_difference) << "</td><td>"
+        << (m.psnr ? format_number("%.2f", *m.psnr) : std::string("&infin;")) << "</td><td>" << format_number("%.5f", m.ssim)
         << "</td><td><a href=\"#pair-" << index << "\">" << html_escape(pair_label(r, directory_mode))
         << "</a></td></tr>\n";
   }
@@ -157,8 +152,8 @@ void write_html_report(const fs::path& path, const std::vector<PairResult>& resu
       << "</code><br>reference: <code>" << html_escape(settings.reference_root.string()) << "</code><br>"
       << results.size() << " pair(s), " << failing << " beyond tolerance, " << plan.missing.size() << " missing, "
       << plan.extra.size() << " extra &mdash; a pixel fails when its largest channel difference exceeds "
-      << format("%g", settings.threshold) << "; a pair fails when more than "
-      << format("%g", settings.max_failing * 100.0) << "% of its pixels fail. Worst first; the "
+      << format_number("%g", settings.threshold) << "; a pair fails when more than "
+      << format_number("%g", settings.max_failing * 100.0) << "% of its pixels fail. Worst first; the "
       << report_full_size_pairs << " worst failing pairs at full size, the others as thumbnails.</div>\n";
   out << "<div class=\"legend\">heat map: <span>identical</span><span class=\"ramp\"></span><span>difference 1"
       << "</span>&mdash; dim scene with a red tint up to the threshold, then bright red, yellow, white when "
@@ -175,10 +170,10 @@ void write_html_report(const fs::path& path, const std::vector<PairResult>& resu
         << "\">\n<h2><span class=\"verdict\">"
         << (r.pass ? "pass" : "FAIL") << "</span> " << html_escape(pair_label(r, settings.directory_mode))
         << "</h2>\n<div class=\"metrics\">" << m.width << "x" << m.height << " &middot; failing "
-        << format("%.4f", m.failing_fraction * 100.0) << "% (" << m.failing_pixels << " px) &middot; max difference "
-        << format("%.4f", m.max_difference) << " &middot; PSNR "
-        << (m.psnr ? format("%.2f", *m.psnr) + " dB" : std::string("&infin; (identical)")) << " &middot; SSIM "
-        << format("%.5f", m.ssim) << "</div>\n<div class=\"images\">\n";
+        << format_number("%.4f", m.failing_fraction * 100.0) << "% (" << m.failing_pixels << " px) &middot; max difference "
+        << format_number("%.4f", m.max_difference) << " &middot; PSNR "
+        << (m.psnr ? format_number("%.2f", *m.psnr) + " dB" : std::string("&infin; (identical)")) << " &middot; SSIM "
+        << format_number("%.5f", m.ssim) << "</div>\n<div class=\"images\">\n";
     const bool full_size = !r.pass && shown_full < report_full_size_pairs;
     RECOIL_CHECK(r.thumbnails.size() == 3 && (!full_size || !r.diff_png.empty()), "report images not prepared");
     if (full_size) {

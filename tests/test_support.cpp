@@ -19,6 +19,15 @@ fs::path scratch_dir(const std::string& name) {
   return dir;
 }
 
+// Built by appends: GCC 12's -Wrestrict misfires on chained operator+ of
+// short literals once inlined.
+std::string shell_quote(const fs::path& path) {
+  std::string out(1, '\'');
+  out.append(path.string());
+  out.push_back('\'');
+  return out;
+}
+
 static std::string slurp(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;

@@ -18,6 +18,9 @@ struct CommandResult {
   std::string err;  // stderr
 };
 
+// `path` in single quotes, for the command lines of run_recoil.
+std::string shell_quote(const std::filesystem::path& path);
+
 // Runs `recoil ARGS` (ARGS is passed to /bin/sh unchanged, so quote paths)
 // with stdin closed and captures both streams.
 CommandResult run_recoil(const std::string& args);

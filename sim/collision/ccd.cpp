@@ -53,8 +53,6 @@ std::optional<double> first_touching_root(const std::array<double, 4>& c, double
   return std::nullopt;
 }
 
-Eigen::Vector3d lerp(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double s) { return x0 + s * (x1 - x0); }
-
 double scale_of(std::initializer_list<const Eigen::Vector3d*> points) {
   // Characteristic length of the pair: the spread of all positions involved.
   Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());

@@ -11,6 +11,9 @@
 
 namespace recoil::sim {
 
+// The position at fraction s of a straight move from x0 to x1.
+inline Eigen::Vector3d lerp(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double s) { return x0 + s * (x1 - x0); }
+
 // First s in [0, 1] at which vertex p touches triangle (a, b, c), if any.
 // Pairs that stay coplanar for the whole step report s = 0 only when touching
 // at the start (sliding within the plane is left to the distance query).

@@ -56,8 +56,6 @@ Eigen::Vector3d edge_cross(const Eigen::Vector3d& da, const Eigen::Vector3d& db)
   return n.squaredNorm() > 1e-24 * da.squaredNorm() * db.squaredNorm() ? n : Eigen::Vector3d::Zero();
 }
 
-Eigen::Vector3d lerp(const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, double s) { return x0 + s * (x1 - x0); }
-
 // A closest point this close to an edge or vertex of the triangle is taken
 // to be on it (candidate_reduction.h): as a share of the contact margin.
 constexpr double kFeatureSnapShare = 0.1;

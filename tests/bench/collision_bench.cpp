@@ -86,7 +86,7 @@ void bench_collision() {
   bench_scaling();
 }
 
-Register reg("collision", bench_collision);
+const Register registered_collision("collision", bench_collision);
 
 }  // namespace
 }  // namespace recoil::bench

@@ -142,7 +142,7 @@ void bench_compare() {
   std::printf("(checksum %.3f)\n", checksum);
 }
 
-Register reg("compare", bench_compare);
+const Register registered_compare("compare", bench_compare);
 
 }  // namespace
 }  // namespace recoil::bench

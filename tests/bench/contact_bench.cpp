@@ -105,7 +105,7 @@ void bench_contact() {
   ratios.print();
 }
 
-Register reg("contact", bench_contact);
+const Register registered_contact("contact", bench_contact);
 
 }  // namespace
 }  // namespace recoil::bench

@@ -38,7 +38,7 @@ void bench_fem() {
   table.print();
 }
 
-Register reg("fem", bench_fem);
+const Register registered_fem("fem", bench_fem);
 
 }  // namespace
 }  // namespace recoil::bench

@@ -35,7 +35,7 @@ void bench_png() {
   table.print();
 }
 
-Register reg("png", bench_png);
+const Register registered_png("png", bench_png);
 
 }  // namespace
 }  // namespace recoil::bench

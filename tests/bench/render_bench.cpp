@@ -79,7 +79,7 @@ void bench_render() {
   parts.print();
 }
 
-Register reg("render", bench_render);
+const Register registered_render("render", bench_render);
 
 }  // namespace
 }  // namespace recoil::bench

@@ -107,8 +107,8 @@ void bench_solver_fem() {
   table.print();
 }
 
-const Register registered("solver", bench_solver);
-const Register registered_fem("solver_fem", bench_solver_fem);
+const Register registered_solver("solver", bench_solver);
+const Register registered_solver_fem("solver_fem", bench_solver_fem);
 
 }  // namespace
 }  // namespace recoil::bench

@@ -37,7 +37,7 @@ void bench_turntable() {
   table.print();
 }
 
-Register reg("turntable", bench_turntable);
+const Register registered_turntable("turntable", bench_turntable);
 
 }  // namespace
 }  // namespace recoil::bench

@@ -41,15 +41,6 @@ std::string slurp(const fs::path& path) {
   return text.str();
 }
 
-// The path quoted for /bin/sh. Built by appends: GCC 12's -Wrestrict misfires
-// on chained operator+ of short literals once inlined.
-std::string q(const fs::path& p) {
-  std::string out(1, '\'');
-  out.append(p.string());
-  out.push_back('\'');
-  return out;
-}
-
 std::string numbered(int i) {
   std::string name(1, 'f');
   name += std::to_string(i);
@@ -72,23 +63,23 @@ TEST(CompareCli, ExitCodesForFiles) {
   render::write_png(dir / "small.png", frame(30, 24, 1));
   std::ofstream(dir / "not_png.png") << "hello";
 
-  EXPECT_EQ(run_recoil("compare " + q(dir / "same.png") + " " + q(dir / "a.png")).exit_code, 0);
-  const CommandResult differ = run_recoil("compare " + q(dir / "changed.png") + " " + q(dir / "a.png"));
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "same.png") + " " + shell_quote(dir / "a.png")).exit_code, 0);
+  const CommandResult differ = run_recoil("compare " + shell_quote(dir / "changed.png") + " " + shell_quote(dir / "a.png"));
   EXPECT_EQ(differ.exit_code, 1);
   EXPECT_NE(differ.out.find("FAIL"), std::string::npos) << differ.out;
 
-  const CommandResult size = run_recoil("compare " + q(dir / "small.png") + " " + q(dir / "a.png"));
+  const CommandResult size = run_recoil("compare " + shell_quote(dir / "small.png") + " " + shell_quote(dir / "a.png"));
   EXPECT_EQ(size.exit_code, 2);
   EXPECT_NE(size.err.find("small.png"), std::string::npos) << size.err;
   EXPECT_NE(size.err.find("a.png"), std::string::npos) << size.err;
   EXPECT_NE(size.err.find("recoil: error:"), std::string::npos) << size.err;
 
-  const CommandResult unreadable = run_recoil("compare " + q(dir / "not_png.png") + " " + q(dir / "a.png"));
+  const CommandResult unreadable = run_recoil("compare " + shell_quote(dir / "not_png.png") + " " + shell_quote(dir / "a.png"));
   EXPECT_EQ(unreadable.exit_code, 2);
   EXPECT_NE(unreadable.err.find("not_png.png"), std::string::npos) << unreadable.err;
-  EXPECT_EQ(run_recoil("compare " + q(dir) + " " + q(dir / "a.png")).exit_code, 2);
-  EXPECT_EQ(run_recoil("compare " + q(dir / "nope.png") + " " + q(dir / "a.png")).exit_code, 2);
-  EXPECT_EQ(run_recoil("compare " + q(dir / "a.png") + " " + q(dir / "a.png") + " --threshold 2").exit_code, 2);
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir) + " " + shell_quote(dir / "a.png")).exit_code, 2);
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "nope.png") + " " + shell_quote(dir / "a.png")).exit_code, 2);
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "a.png") + " " + shell_quote(dir / "a.png") + " --threshold 2").exit_code, 2);
 }
 
 TEST(CompareCli, ThresholdAndMaxFailing) {
@@ -96,7 +87,7 @@ TEST(CompareCli, ThresholdAndMaxFailing) {
   const render::Image a = frame(16, 16, 2);
   render::write_png(dir / "ref.png", a);
   render::write_png(dir / "one.png", changed(a, 1, 10));  // one pixel 10/255 = 0.039 off
-  const std::string args = "compare " + q(dir / "one.png") + " " + q(dir / "ref.png");
+  const std::string args = "compare " + shell_quote(dir / "one.png") + " " + shell_quote(dir / "ref.png");
   EXPECT_EQ(run_recoil(args).exit_code, 1);                          // 1/256 > 0.001
   EXPECT_EQ(run_recoil(args + " --max-failing 0.004").exit_code, 0);  // 1/256 = 0.0039
   EXPECT_EQ(run_recoil(args + " --threshold 0.04").exit_code, 0);     // 0.039 is within
@@ -115,7 +106,7 @@ TEST(CompareCli, JsonLayoutInDirectoryMode) {
   render::write_png(dir / "actual/frame_0004.png", f3);
   std::ofstream(dir / "actual/notes.txt") << "not a frame";
 
-  const CommandResult r = run_recoil("compare " + q(dir / "actual") + " " + q(dir / "ref") + " --json");
+  const CommandResult r = run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref") + " --json");
   EXPECT_EQ(r.exit_code, 1);
   const nlohmann::ordered_json j = nlohmann::ordered_json::parse(r.out);
   std::vector<std::string> keys;
@@ -153,21 +144,21 @@ TEST(CompareCli, MissingFramesFailExtraFramesDoNot) {
   render::write_png(dir / "ref/a.png", frame(16, 16, 1));
   render::write_png(dir / "actual/a.png", frame(16, 16, 1));
   render::write_png(dir / "actual/b.png", frame(16, 16, 2));
-  const CommandResult extra = run_recoil("compare " + q(dir / "actual") + " " + q(dir / "ref"));
+  const CommandResult extra = run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref"));
   EXPECT_EQ(extra.exit_code, 0) << extra.out;
   EXPECT_NE(extra.out.find("b.png"), std::string::npos);
-  const CommandResult missing = run_recoil("compare " + q(dir / "ref") + " " + q(dir / "actual"));
+  const CommandResult missing = run_recoil("compare " + shell_quote(dir / "ref") + " " + shell_quote(dir / "actual"));
   EXPECT_EQ(missing.exit_code, 1) << missing.out;
   EXPECT_NE(missing.out.find("MISSING"), std::string::npos) << missing.out;
   // Nothing rendered at all: every reference frame is missing.
   fs::create_directories(dir / "empty");
-  const CommandResult none = run_recoil("compare " + q(dir / "empty") + " " + q(dir / "actual") + " --json");
+  const CommandResult none = run_recoil("compare " + shell_quote(dir / "empty") + " " + shell_quote(dir / "actual") + " --json");
   EXPECT_EQ(none.exit_code, 1) << none.err;
   const nlohmann::json j = nlohmann::json::parse(none.out);
   EXPECT_EQ(j["pairs"].size(), 0u);
   EXPECT_EQ(j["missing"].size(), 2u);
   // An empty reference directory is a wrong path, not a pass.
-  EXPECT_EQ(run_recoil("compare " + q(dir / "actual") + " " + q(dir / "empty")).exit_code, 2);
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "empty")).exit_code, 2);
 }
 
 TEST(CompareCli, DiffWritesOneHeatMapPerPair) {
@@ -180,7 +171,7 @@ TEST(CompareCli, DiffWritesOneHeatMapPerPair) {
     render::write_png(dir / "actual" / name, i == 2 ? changed(frame(20, 12, i), 3, 60) : frame(20, 12, i));
   }
   const CommandResult r =
-      run_recoil("compare " + q(dir / "actual") + " " + q(dir / "ref") + " --diff " + q(dir / "diffs"));
+      run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref") + " --diff " + shell_quote(dir / "diffs"));
   EXPECT_EQ(r.exit_code, 1);
   for (int i = 1; i <= 3; ++i) {
     const render::Image heat = render::read_png(dir / "diffs" / numbered(i));
@@ -190,7 +181,7 @@ TEST(CompareCli, DiffWritesOneHeatMapPerPair) {
     EXPECT_EQ(heat.pixel(3, 3)[0] == 255, i == 2);
   }
   // Heat maps named like the frames must not land among the inputs.
-  EXPECT_EQ(run_recoil("compare " + q(dir / "actual") + " " + q(dir / "ref") + " --diff " + q(dir / "ref")).exit_code,
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref") + " --diff " + shell_quote(dir / "ref")).exit_code,
             2);
 }
 
@@ -206,11 +197,11 @@ TEST(CompareCli, UpdateTouchesOnlyFailingPairs) {
   const std::string pass_before = slurp(dir / "ref/pass.png");
   ASSERT_NE(pass_before, slurp(dir / "actual/pass.png"));
 
-  const CommandResult r = run_recoil("compare " + q(dir / "actual") + " " + q(dir / "ref") + " --update");
+  const CommandResult r = run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref") + " --update");
   EXPECT_EQ(r.exit_code, 1) << "the comparison itself failed; --update does not change the verdict";
   EXPECT_EQ(slurp(dir / "ref/pass.png"), pass_before);
   EXPECT_EQ(slurp(dir / "ref/fail.png"), slurp(dir / "actual/fail.png"));
-  EXPECT_EQ(run_recoil("compare " + q(dir / "actual") + " " + q(dir / "ref")).exit_code, 0);
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref")).exit_code, 0);
   for (const auto& entry : fs::directory_iterator(dir / "ref"))
     EXPECT_EQ(entry.path().extension(), ".png") << "temporary left behind: " << entry.path();
 }
@@ -223,8 +214,8 @@ TEST(CompareCli, ReportEmbedsThreeImagesPerPairWorstFirst) {
   render::write_png(dir / "actual/aaa_good.png", frame(16, 16, 1));
   render::write_png(dir / "ref/zzz_bad.png", frame(16, 16, 2));
   render::write_png(dir / "actual/zzz_bad.png", changed(frame(16, 16, 2), 5, 70));
-  const CommandResult r = run_recoil("compare " + q(dir / "actual") + " " + q(dir / "ref") + " --report " +
-                                     q(dir / "report.html") + " -q");
+  const CommandResult r = run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref") + " --report " +
+                                     shell_quote(dir / "report.html") + " -q");
   EXPECT_EQ(r.exit_code, 1);
   const std::string html = slurp(dir / "report.html");
   EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 6u);
@@ -250,7 +241,7 @@ TEST(CompareCli, LogJsonReportsProgressPerPair) {
     render::write_png(dir / "ref" / numbered(i), frame(12, 12, i));
     render::write_png(dir / "actual" / numbered(i), frame(12, 12, i));
   }
-  const CommandResult r = run_recoil("--log-json compare " + q(dir / "actual") + " " + q(dir / "ref"));
+  const CommandResult r = run_recoil("--log-json compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref"));
   EXPECT_EQ(r.exit_code, 0);
   std::istringstream lines(r.err);
   std::string line;
@@ -263,7 +254,7 @@ TEST(CompareCli, LogJsonReportsProgressPerPair) {
   }
   EXPECT_EQ(expected_done, 3u);
   // Without --log-json and with stderr not a terminal: no progress at all.
-  EXPECT_EQ(run_recoil("compare " + q(dir / "actual") + " " + q(dir / "ref")).err, "");
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref")).err, "");
 }
 
 TEST(CompareCli, HelpTeaches) {

@@ -46,8 +46,6 @@ int count_pngs(const fs::path& dir) {
   return n;
 }
 
-std::string q(const fs::path& p) { return "'" + p.string() + "'"; }
-
 }  // namespace
 
 TEST(RunCommand, EveryShippedSceneRuns) {
@@ -58,7 +56,7 @@ TEST(RunCommand, EveryShippedSceneRuns) {
   ASSERT_GE(scenes.size(), 14u);
   for (const fs::path& scene : scenes) {
     const fs::path dir = scratch_dir("every_scene_" + scene.stem().string() + scene.parent_path().filename().string());
-    const CommandResult r = run_recoil("run " + q(scene) + " --frames 1-2 --no-render -q -o " + q(dir));
+    const CommandResult r = run_recoil("run " + shell_quote(scene) + " --frames 1-2 --no-render -q -o " + shell_quote(dir));
     EXPECT_EQ(r.exit_code, 0) << scene << ": " << r.err;
     const std::vector<json> stats = read_stats(dir / "stats.jsonl");
     ASSERT_EQ(stats.size(), 2u) << scene;
@@ -73,7 +71,7 @@ TEST(RunCommand, EveryShippedSceneRuns) {
 TEST(RunCommand, RendersTheSelectedFramesAndWritesSpecStats) {
   const fs::path dir = scratch_dir("run_render");
   const fs::path scene = source_path("assets/scenes/bunny-drop.json");
-  const CommandResult r = run_recoil("run " + q(scene) + " --frames 1,3 --resolution 64x48 -o " + q(dir));
+  const CommandResult r = run_recoil("run " + shell_quote(scene) + " --frames 1,3 --resolution 64x48 -o " + shell_quote(dir));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(count_pngs(dir), 2);
   ASSERT_TRUE(fs::exists(dir / "frame_0003.png"));
@@ -121,8 +119,8 @@ TEST(RunCommand, ColorAndCameraDistanceOverridesGiveASceneRunAccepts) {
   // what was drawn and parse again (--camera-distance 0 means "fit").
   const fs::path dir = scratch_dir("run_overrides"), rerun = scratch_dir("run_overrides_rerun");
   const fs::path scene = source_path("assets/scenes/bunny-drop.json");
-  CommandResult r = run_recoil("run " + q(scene) + " --frames 1 --resolution 64x48 --color '#ff0000' --camera-distance 0 -o " +
-                               q(dir));
+  CommandResult r = run_recoil("run " + shell_quote(scene) + " --frames 1 --resolution 64x48 --color '#ff0000' --camera-distance 0 -o " +
+                               shell_quote(dir));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json resolved = json::parse(file_bytes(dir / "scene.json"));
   int colored = 0;
@@ -133,7 +131,7 @@ TEST(RunCommand, ColorAndCameraDistanceOverridesGiveASceneRunAccepts) {
     }
   EXPECT_GE(colored, 2);  // the bunny and the crate
   EXPECT_FALSE(resolved["render"].contains("camera") && resolved["render"]["camera"].contains("distance"));
-  r = run_recoil("run " + q(dir / "scene.json") + " --frames 1 --resolution 64x48 -o " + q(rerun));
+  r = run_recoil("run " + shell_quote(dir / "scene.json") + " --frames 1 --resolution 64x48 -o " + shell_quote(rerun));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(file_bytes(dir / "frame_0001.png"), file_bytes(rerun / "frame_0001.png"));  // drawn the same
 }
@@ -142,7 +140,7 @@ TEST(RunCommand, SameSceneTwiceGivesIdenticalFramesAndStats) {
   const fs::path a = scratch_dir("run_det_a"), b = scratch_dir("run_det_b");
   const fs::path scene = source_path("assets/scenes/jelly-stack.json");
   for (const fs::path& dir : {a, b}) {
-    const CommandResult r = run_recoil("run " + q(scene) + " --frames 1-3 --resolution 64x48 -o " + q(dir));
+    const CommandResult r = run_recoil("run " + shell_quote(scene) + " --frames 1-3 --resolution 64x48 -o " + shell_quote(dir));
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   for (const char* name : {"frame_0001.png", "frame_0002.png", "frame_0003.png"})
@@ -157,8 +155,8 @@ TEST(RunCommand, SameSceneTwiceGivesIdenticalFramesAndStats) {
 
 TEST(RunCommand, ResumeSkipsFramesAlreadyOnDisk) {
   const fs::path dir = scratch_dir("run_resume");
-  const std::string command = "run " + q(source_path("assets/scenes/validation/rest.json")) +
-                              " --frames 1-3 --resolution 32x32 --msaa 0 -o " + q(dir);
+  const std::string command = "run " + shell_quote(source_path("assets/scenes/validation/rest.json")) +
+                              " --frames 1-3 --resolution 32x32 --msaa 0 -o " + shell_quote(dir);
   ASSERT_EQ(run_recoil(command).exit_code, 0);
   // A marker in frame 1 survives a resume; the missing frame 2 is rendered again.
   const std::string frame2 = file_bytes(dir / "frame_0002.png");
@@ -186,7 +184,7 @@ TEST(RunCommand, DivergingSceneExits3NamingFrameAndBodyAndKeepsEarlierFrames) {
                 "pinned": {"min": [-1, -1, -1], "max": [1, 0.01, 1]}, "self_contact": false, "transform": {"position": [0, 0.3, 0]}}],
     "render": {"fps": 10, "resolution": [32, 32], "msaa": 0}})";
   const fs::path out = dir / "out";
-  const CommandResult r = run_recoil("run " + q(scene) + " -o " + q(out));
+  const CommandResult r = run_recoil("run " + shell_quote(scene) + " -o " + shell_quote(out));
   std::cout << r.err;
   EXPECT_EQ(r.exit_code, 3) << r.err;
   EXPECT_NE(r.err.find("recoil: error: simulation failed at frame "), std::string::npos) << r.err;
@@ -204,8 +202,8 @@ TEST(DropCommand, SeededPileReproducesAndSavesASceneRunAccepts) {
   const fs::path a = scratch_dir("drop_a"), b = scratch_dir("drop_b");
   const fs::path bunny = source_path("assets/meshes/bunny.obj");
   for (const fs::path& dir : {a, b}) {
-    const CommandResult r = run_recoil("drop " + q(bunny) + " --count 3 --material jelly --frames 1-2 --no-render -o " +
-                                       q(dir / "out") + " --save-scene " + q(dir / "pile.json"));
+    const CommandResult r = run_recoil("drop " + shell_quote(bunny) + " --count 3 --material jelly --frames 1-2 --no-render -o " +
+                                       shell_quote(dir / "out") + " --save-scene " + shell_quote(dir / "pile.json"));
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   EXPECT_EQ(file_bytes(a / "pile.json"), file_bytes(b / "pile.json"));
@@ -221,7 +219,7 @@ TEST(DropCommand, SeededPileReproducesAndSavesASceneRunAccepts) {
   const json saved = json::parse(file_bytes(a / "pile.json"));
   EXPECT_EQ(saved["bodies"].size(), 4u);  // ground + 3
   const fs::path rerun = scratch_dir("drop_rerun");
-  const CommandResult r = run_recoil("run " + q(a / "pile.json") + " --frames 1-2 --no-render -o " + q(rerun));
+  const CommandResult r = run_recoil("run " + shell_quote(a / "pile.json") + " --frames 1-2 --no-render -o " + shell_quote(rerun));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::vector<json> sr = read_stats(rerun / "stats.jsonl");
   ASSERT_EQ(sr.size(), 2u);
@@ -231,15 +229,15 @@ TEST(DropCommand, SeededPileReproducesAndSavesASceneRunAccepts) {
 TEST(RunCommand, VideoWithoutFfmpegFailsAtOnceWithTheInstallCommand) {
   if (!cli::find_ffmpeg().empty()) GTEST_SKIP() << "ffmpeg is installed here";
   const fs::path dir = scratch_dir("run_video");
-  const CommandResult r = run_recoil("run " + q(source_path("assets/scenes/bunny-drop.json")) + " --video " +
-                                     q(dir / "v.mp4") + " -o " + q(dir / "out"));
+  const CommandResult r = run_recoil("run " + shell_quote(source_path("assets/scenes/bunny-drop.json")) + " --video " +
+                                     shell_quote(dir / "v.mp4") + " -o " + shell_quote(dir / "out"));
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_NE(r.err.find("scripts/install-deps.sh --video"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out" / "frame_0001.png"));
 }
 
 TEST(InfoCommand, SceneListsBodiesAndTetrahedra) {
-  const CommandResult r = run_recoil("info " + q(source_path("assets/scenes/jelly-stack.json")) + " --json");
+  const CommandResult r = run_recoil("info " + shell_quote(source_path("assets/scenes/jelly-stack.json")) + " --json");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const json info = json::parse(r.out);
   EXPECT_EQ(info["name"], "jelly-stack");
@@ -250,7 +248,7 @@ TEST(InfoCommand, SceneListsBodiesAndTetrahedra) {
   EXPECT_GT(info["bodies"][1]["tets"].get<int>(), 50);
   // A 0.2 m jelly cube of density 1000: 8 kg.
   EXPECT_NEAR(info["bodies"][1]["mass"].get<double>(), 8.0, 0.08);
-  const CommandResult text = run_recoil("info " + q(source_path("assets/scenes/jelly-stack.json")));
+  const CommandResult text = run_recoil("info " + shell_quote(source_path("assets/scenes/jelly-stack.json")));
   ASSERT_EQ(text.exit_code, 0) << text.err;
   EXPECT_NE(text.out.find("jelly-2"), std::string::npos) << text.out;
 }

@@ -14,7 +14,7 @@ static Image numbered_image(int n) {
 }
 
 TEST(FrameWriter, WritesEveryFrameWithItsOwnContent) {
-  const auto dir = test::scratch_dir("frame_writer");
+  const auto dir = recoil::test::scratch_dir("frame_writer");
   {
     FrameWriter writer(PngOptions{}, 3, 2);
     for (int n = 0; n < 20; ++n) writer.submit(dir / ("f" + std::to_string(n) + ".png"), numbered_image(n));

@@ -12,7 +12,7 @@ namespace recoil::render {
 TEST(Png, RoundTripIsLosslessAtEveryLevel) {
   Image image(37, 23);  // odd sizes catch stride mistakes
   for (size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = static_cast<std::uint8_t>((i * 7919) % 251);
-  const auto dir = test::scratch_dir("png_round_trip");
+  const auto dir = recoil::test::scratch_dir("png_round_trip");
   for (int level : {0, 1, 6, 9}) {
     for (bool fast : {true, false}) {
       const auto path = dir / ("img_" + std::to_string(level) + (fast ? "f" : "a") + ".png");
@@ -30,7 +30,7 @@ TEST(Png, RoundTripIsLosslessAtEveryLevel) {
 }
 
 TEST(Png, RejectsNonPngAndTruncatedFiles) {
-  const auto dir = test::scratch_dir("png_bad");
+  const auto dir = recoil::test::scratch_dir("png_bad");
   std::ofstream(dir / "text.png") << "hello";
   EXPECT_THROW(read_png(dir / "text.png"), Error);
   Image image(16, 16);

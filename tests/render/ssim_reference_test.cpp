@@ -46,13 +46,13 @@ std::string python_with_skimage() {
 TEST(SsimReference, AgreesWithScikitImage) {
   const std::string python = python_with_skimage();
   if (python.empty()) GTEST_SKIP() << "no python3 with scikit-image (apt-get install python3-skimage)";
-  const std::string script = test::source_path("tests/render/ssim_reference_check.py").string();
+  const std::string script = recoil::test::source_path("tests/render/ssim_reference_check.py").string();
   const std::array<std::array<const char*, 2>, 3> pairs{{{"chelsea_noise.png", "chelsea_ref.png"},
                                                          {"coffee_blur.png", "coffee_ref.png"},
                                                          {"coffee_ref.png", "coffee_blur.png"}}};
   for (const auto& [actual_name, reference_name] : pairs) {
-    const auto actual = test::source_path(std::string("tests/render/data/") + actual_name);
-    const auto reference = test::source_path(std::string("tests/render/data/") + reference_name);
+    const auto actual = recoil::test::source_path(std::string("tests/render/data/") + actual_name);
+    const auto reference = recoil::test::source_path(std::string("tests/render/data/") + reference_name);
     const ShellResult r = shell(python + " '" + script + "' '" + actual.string() + "' '" + reference.string() + "'");
     ASSERT_EQ(r.status, 0) << r.out;
     const nlohmann::json expected = nlohmann::json::parse(r.out);

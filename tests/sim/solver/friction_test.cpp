@@ -13,13 +13,13 @@
 namespace recoil::sim {
 namespace {
 
+using solver_test::kG;
+using solver_test::kH;
+using solver_test::kMethods;
 using solver_test::solve_copy;
 using solver_test::tight;
 
-constexpr double kG = 9.81;
-constexpr double kH = 1.0 / 60.0;
 constexpr double kMass = 2.0;
-const SolverMethod kMethods[] = {SolverMethod::cr, SolverMethod::cr_plain, SolverMethod::pgs};
 
 // End-of-step tangential velocity (t1, t2) of the particle.
 Eigen::Vector2d tangential_velocity(const OwnedProblem& owned, const Eigen::VectorXd& dv) {

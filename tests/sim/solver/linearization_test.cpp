@@ -11,8 +11,8 @@
 namespace recoil::sim {
 namespace {
 
-constexpr double kH = 1.0 / 60.0;
-constexpr double kG = 9.81;
+using solver_test::kG;
+using solver_test::kH;
 
 // Two free particles (masses 1 and 3 kg) falling onto the ground z = 0.
 // Particle 0 starts with a contact; particle 1 has none until the solver's

@@ -16,12 +16,12 @@
 namespace recoil::sim {
 namespace {
 
-constexpr double kG = 9.81;
-constexpr double kH = 1.0 / 60.0;
-constexpr double kMass = 3.0;
+using solver_test::kG;
+using solver_test::kH;
+using solver_test::kMethods;
+constexpr double kBoxMass = 3.0;
 const Eigen::Vector3d kSize(1.0, 0.6, 0.4);
 constexpr double kYaw = 0.3;  // rad: non-diagonal world inertia
-const SolverMethod kMethods[] = {SolverMethod::cr, SolverMethod::cr_plain, SolverMethod::pgs};
 
 struct BoxCheck {
   double dv_error = 0.0;
@@ -44,17 +44,17 @@ BoxCheck check(const solver_test::Solution& s, const Eigen::Vector3d& expected_l
 
 TEST(SolverRigidBox, RestsOnFourCorners) {
   for (SolverMethod method : kMethods) {
-    OwnedProblem owned = rigid_box_on_ground(kSize, kMass, kYaw, kG, kH, Eigen::Vector3d::Zero(), 0.5, 0.5);
+    OwnedProblem owned = rigid_box_on_ground(kSize, kBoxMass, kYaw, kG, kH, Eigen::Vector3d::Zero(), 0.5, 0.5);
     const ContactSolverSettings settings = solver_test::tight(method, 1e-10, 20000);
     const auto s = solver_test::solve_copy(owned.problem, settings);
     const BoxCheck c = check(s, Eigen::Vector3d::Zero());
     std::cout << to_string(method) << ": box at rest: |dv|_inf " << c.dv_error << ", sum lambda " << c.lambda_sum
-              << " (weight impulse " << kMass * kG * kH << "), largest multiplier " << c.lambda_max << ", iterations "
+              << " (weight impulse " << kBoxMass * kG * kH << "), largest multiplier " << c.lambda_max << ", iterations "
               << s.stats.iterations << ", restarts " << s.stats.restarts << ", kkt " << s.stats.kkt << "\n";
     EXPECT_TRUE(s.stats.converged) << to_string(method);
     EXPECT_LT(c.dv_error, 1e-8) << to_string(method);
-    EXPECT_NEAR(c.lambda_sum, kMass * kG * kH, 1e-8) << to_string(method);
-    EXPECT_LT(c.lambda_max, 2.0 * kMass * kG * kH) << to_string(method);
+    EXPECT_NEAR(c.lambda_sum, kBoxMass * kG * kH, 1e-8) << to_string(method);
+    EXPECT_LT(c.lambda_max, 2.0 * kBoxMass * kG * kH) << to_string(method);
     EXPECT_LT(s.stats.kkt, 1e-8) << to_string(method);
   }
 }
@@ -63,7 +63,7 @@ TEST(SolverRigidBox, SlidesWithCoulombDeceleration) {
   const double mu = 0.4, v0 = 1.5;
   const Eigen::Vector3d velocity(v0 * std::cos(0.2), v0 * std::sin(0.2), 0.0);
   for (SolverMethod method : kMethods) {
-    OwnedProblem owned = rigid_box_on_ground(kSize, kMass, kYaw, kG, kH, velocity, mu, mu);
+    OwnedProblem owned = rigid_box_on_ground(kSize, kBoxMass, kYaw, kG, kH, velocity, mu, mu);
     const ContactSolverSettings settings = solver_test::tight(method, 1e-10, 20000);
     const auto s = solver_test::solve_copy(owned.problem, settings);
     const BoxCheck c = check(s, -mu * kG * kH * velocity.normalized());
@@ -72,8 +72,8 @@ TEST(SolverRigidBox, SlidesWithCoulombDeceleration) {
               << ", restarts " << s.stats.restarts << ", kkt " << s.stats.kkt << "\n";
     EXPECT_TRUE(s.stats.converged) << to_string(method);
     EXPECT_LT(c.dv_error, 1e-7) << to_string(method);
-    EXPECT_NEAR(c.lambda_sum, kMass * kG * kH, 1e-7) << to_string(method);
-    EXPECT_LT(c.lambda_max, 2.0 * kMass * kG * kH) << to_string(method);
+    EXPECT_NEAR(c.lambda_sum, kBoxMass * kG * kH, 1e-7) << to_string(method);
+    EXPECT_LT(c.lambda_max, 2.0 * kBoxMass * kG * kH) << to_string(method);
     EXPECT_LT(s.stats.kkt, 1e-7) << to_string(method);
     EXPECT_EQ(s.stats.sliding, 4) << to_string(method);
   }

@@ -15,9 +15,9 @@
 namespace recoil::sim {
 namespace {
 
-constexpr double kH = 1.0 / 60.0;
-constexpr double kG = 9.81;
-const SolverMethod kMethods[] = {SolverMethod::cr, SolverMethod::cr_plain, SolverMethod::pgs};
+using solver_test::kG;
+using solver_test::kH;
+using solver_test::kMethods;
 
 // Re-linearisation that tilts the contact normal by 20 degrees about x
 // (as a contact sliding onto a slope would) while its right-hand side stays

@@ -21,8 +21,8 @@
 namespace recoil::sim {
 namespace {
 
-constexpr double kG = 9.81;
-constexpr double kH = 1.0 / 60.0;
+using solver_test::kG;
+using solver_test::kH;
 constexpr double kMu = 0.3;
 constexpr double kSide = 1.5;  // m/s^2 along y, below mu g: the body ends up stopping
 constexpr int kSteps = 40;

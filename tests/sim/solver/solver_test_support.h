@@ -9,6 +9,10 @@
 
 namespace recoil::sim::solver_test {
 
+inline constexpr double kG = 9.81;        // m/s^2
+inline constexpr double kH = 1.0 / 60.0;  // s: the time step of the solver tests' problems
+inline constexpr SolverMethod kMethods[] = {SolverMethod::cr, SolverMethod::cr_plain, SolverMethod::pgs};
+
 // Settings with both tolerances (m/s) at `tolerance` and a generous cap.
 inline ContactSolverSettings tight(SolverMethod method, double tolerance = 1e-11, int max_iterations = 200000) {
   ContactSolverSettings s;
