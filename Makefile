@@ -3,6 +3,12 @@
 BUILD ?= build
 JOBS  ?= $(shell nproc)
 CMAKE_FLAGS ?=
+# New build folders use Ninja (installed by scripts/install-deps.sh): it
+# compiles a target's sources while the libraries it links are still being
+# built, which the Makefile generator does not. Clean `make test` on 2 cores:
+# 4m19s of build with Ninja against about 7 min with Makefiles. CMake reads
+# this only when it creates a build folder, so existing ones keep theirs.
+export CMAKE_GENERATOR ?= Ninja
 
 .PHONY: all deps build demo test test-sanitize bench clean
 

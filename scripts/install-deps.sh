@@ -7,6 +7,7 @@ set -euo pipefail
 
 packages=(
   build-essential cmake pkg-config
+  ninja-build            # the build tool make uses for new build folders (parallel across targets)
   libeigen3-dev          # Eigen 3.4: all linear algebra
   libembree-dev          # Embree 3: collision queries
   libosmesa6-dev         # OSMesa: offscreen software OpenGL
