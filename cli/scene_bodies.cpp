@@ -88,13 +88,16 @@ sim::Transform parse_transform(const JsonCursor& c) {
   return t;
 }
 
-sim::TriMesh parse_primitive(const JsonCursor& c) {
+// A box also reports its edge lengths in `box_size` (m), so that a
+// deformable one can be re-gridded to its lattice (parse_body).
+sim::TriMesh parse_primitive(const JsonCursor& c, std::optional<Eigen::Vector3d>& box_size) {
   c.expect_object({"box", "sphere", "cylinder", "capsule", "torus"});
   if (c.value().size() != 1) c.fail("expected exactly one of box, sphere, cylinder, capsule, torus");
   if (c.has("box")) {
     const JsonCursor box = c.child("box");
     const Eigen::Vector3d size = box.vec3();
     if (!(size.minCoeff() > 0.0)) box.fail("edge lengths must be > 0");
+    box_size = size;
     return sim::make_box(size);
   }
   if (c.has("sphere")) return sim::make_sphere(c.child("sphere").positive());
@@ -164,8 +167,7 @@ Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir, MeshFi
   if (mesh == primitive) body.fail(mesh ? "give either \"mesh\" or \"primitive\", not both" : "needs a \"mesh\" or a \"primitive\"");
   Geometry g;
   if (primitive) {
-    g.surface = parse_primitive(body.child("primitive"));
-    if (body.child("primitive").has("box")) g.box = body.child("primitive").child("box").vec3();
+    g.surface = parse_primitive(body.child("primitive"), g.box);
     return g;
   }
   const JsonCursor c = body.child("mesh");
@@ -292,9 +294,13 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     } else if (d.tets.empty()) {
       body.child_or_empty("tets").integer_or("resolution", d.resolution);
     }
-    // A deformable box's faces get a grid of the lattice's spacing: with its
-    // 8 corners only, a face is held at its corners and sags through what it
-    // rests on (the jelly cubes of the validation tests did).
+    // A deformable box's faces get `resolution` cells per edge, the lattice's
+    // spacing for a cube, in place of the primitive's default 8: a surface
+    // finer than its lattice gives several nearly dependent contact rows per
+    // touching lattice cell, which the contact solver cannot hold together
+    // (the jelly-stack example; README, "not passing yet"). Coarser than the
+    // lattice it would not do either: a face held only at its corners sags
+    // through what it rests on (the validation jelly cubes did).
     if (geometry.box && d.tets.empty()) d.mesh = sim::make_box(*geometry.box, d.resolution);
     if (body.has("pinned")) {
       const JsonCursor p = body.child("pinned");

@@ -28,7 +28,7 @@ std::string shell_quote(const fs::path& path) {
   return out;
 }
 
-static std::string slurp(const fs::path& path) {
+std::string file_bytes(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
   std::ostringstream text;
   text << in.rdbuf();
@@ -45,8 +45,8 @@ CommandResult run_recoil(const std::string& args) {
   const int status = std::system(command.c_str());
   CommandResult result;
   result.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
-  result.out = slurp(out);
-  result.err = slurp(err);
+  result.out = file_bytes(out);
+  result.err = file_bytes(err);
   return result;
 }
 

@@ -18,6 +18,9 @@ struct CommandResult {
   std::string err;  // stderr
 };
 
+// A file's whole content, byte for byte ("" when it cannot be read).
+std::string file_bytes(const std::filesystem::path& path);
+
 // `path` in single quotes, for the command lines of run_recoil.
 std::string shell_quote(const std::filesystem::path& path);
 

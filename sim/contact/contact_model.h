@@ -24,7 +24,6 @@
 // triangle) or the pair of edges (edge-edge) from the start of the step to
 // x*; a plane's normal is fixed. Tangents come from tangent_basis(n).
 #include <Eigen/Core>
-#include <array>
 #include <map>
 #include <vector>
 
@@ -40,7 +39,6 @@ struct ContactPlane {
   CollisionPlane plane;
   double mu_static = 0.5, mu_kinetic = 0.5;
 };
-
 
 // Each contact's state at the end of a step with its tangent basis, keyed by
 // candidate identity: the warm start of the next step.

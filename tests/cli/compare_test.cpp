@@ -34,13 +34,6 @@ render::Image changed(const render::Image& base, int side, int amount) {
   return image;
 }
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
-
 std::string numbered(int i) {
   std::string name(1, 'f');
   name += std::to_string(i);
@@ -194,13 +187,13 @@ TEST(CompareCli, UpdateTouchesOnlyFailingPairs) {
   render::write_png(dir / "actual/pass.png", changed(base, 2, 2));  // 2/255 < 0.02: passes, bytes differ
   render::write_png(dir / "ref/fail.png", base);
   render::write_png(dir / "actual/fail.png", changed(base, 8, 80));
-  const std::string pass_before = slurp(dir / "ref/pass.png");
-  ASSERT_NE(pass_before, slurp(dir / "actual/pass.png"));
+  const std::string pass_before = file_bytes(dir / "ref/pass.png");
+  ASSERT_NE(pass_before, file_bytes(dir / "actual/pass.png"));
 
   const CommandResult r = run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref") + " --update");
   EXPECT_EQ(r.exit_code, 1) << "the comparison itself failed; --update does not change the verdict";
-  EXPECT_EQ(slurp(dir / "ref/pass.png"), pass_before);
-  EXPECT_EQ(slurp(dir / "ref/fail.png"), slurp(dir / "actual/fail.png"));
+  EXPECT_EQ(file_bytes(dir / "ref/pass.png"), pass_before);
+  EXPECT_EQ(file_bytes(dir / "ref/fail.png"), file_bytes(dir / "actual/fail.png"));
   EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref")).exit_code, 0);
   for (const auto& entry : fs::directory_iterator(dir / "ref"))
     EXPECT_EQ(entry.path().extension(), ".png") << "temporary left behind: " << entry.path();
@@ -217,12 +210,12 @@ TEST(CompareCli, ReportEmbedsThreeImagesPerPairWorstFirst) {
   const CommandResult r = run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref") + " --report " +
                                      shell_quote(dir / "report.html") + " -q");
   EXPECT_EQ(r.exit_code, 1);
-  const std::string html = slurp(dir / "report.html");
+  const std::string html = file_bytes(dir / "report.html");
   EXPECT_EQ(count(html, "src=\"data:image/png;base64,"), 6u);
   EXPECT_NE(html.find("<!DOCTYPE html>"), std::string::npos);
   EXPECT_LT(html.find("zzz_bad.png"), html.find("aaa_good.png")) << "failing pair first";
   // The failing pair embeds the original files; the passing one thumbnails.
-  const std::string bad_reference = slurp(dir / "ref/zzz_bad.png");
+  const std::string bad_reference = file_bytes(dir / "ref/zzz_bad.png");
   EXPECT_NE(html.find(cli::base64_encode(std::vector<std::uint8_t>(bad_reference.begin(), bad_reference.end()))),
             std::string::npos);
   EXPECT_EQ(count(html, "<figcaption>reference (thumbnail)"), 1u);

@@ -8,7 +8,7 @@
 namespace recoil::test {
 
 TEST(InfoCommand, BunnyIsClosedWithPositiveVolume) {
-  const CommandResult r = run_recoil("info --json '" + source_path("assets/meshes/bunny.obj").string() + "'");
+  const CommandResult r = run_recoil("info --json " + shell_quote(source_path("assets/meshes/bunny.obj")));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const auto json = nlohmann::json::parse(r.out);
   EXPECT_EQ(json["triangles"], 3674);
@@ -18,7 +18,7 @@ TEST(InfoCommand, BunnyIsClosedWithPositiveVolume) {
   EXPECT_GT(json["volume"].get<double>(), 0.1);
   EXPECT_NEAR(json["bounds"]["min"][1].get<double>(), 0.0, 1e-9);
 
-  const CommandResult text = run_recoil("info '" + source_path("assets/meshes/bunny.obj").string() + "'");
+  const CommandResult text = run_recoil("info " + shell_quote(source_path("assets/meshes/bunny.obj")));
   EXPECT_EQ(text.exit_code, 0);
   EXPECT_NE(text.out.find("watertight   yes"), std::string::npos) << text.out;
 }
@@ -48,7 +48,7 @@ TEST(InfoCommand, AssimpCorpusNeverCrashes) {
     const std::string ext = entry.path().extension().string();
     if (ext == ".jpg" || ext == ".png" || ext == ".tga" || ext == ".bmp" || ext == ".dds" || ext == ".mtl") continue;
     ++files;
-    const CommandResult r = run_recoil("info --json '" + entry.path().string() + "'");
+    const CommandResult r = run_recoil("info --json " + shell_quote(entry.path()));
     EXPECT_TRUE(r.exit_code == 0 || r.exit_code == 2) << entry.path() << " exit " << r.exit_code << ": " << r.err;
     if (r.exit_code == 2) {
       ++refused;

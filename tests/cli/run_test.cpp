@@ -18,13 +18,6 @@ using nlohmann::json;
 
 namespace {
 
-std::string file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::vector<json> read_stats(const fs::path& path) {
   std::vector<json> lines;
   std::ifstream in(path);

@@ -164,7 +164,7 @@ TEST(SceneFile, BadSceneCorpusGivesExit2NamingFileAndPointer) {
   for (const BadScene& bad : corpus) {
     const fs::path file = source_path(std::string("tests/cli/bad/") + bad.file);
     ASSERT_TRUE(fs::exists(file)) << file;
-    const CommandResult r = run_recoil("run '" + file.string() + "' --no-render -o '" + out.string() + "'");
+    const CommandResult r = run_recoil("run " + shell_quote(file) + " --no-render -o " + shell_quote(out));
     std::cout << bad.file << " -> exit " << r.exit_code << ": " << r.err;
     EXPECT_EQ(r.exit_code, 2) << bad.file << ": " << r.err;
     EXPECT_EQ(r.err.rfind("recoil: error: " + file.string(), 0), 0u) << "names the file first: " << r.err;

@@ -2,7 +2,6 @@
 
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 
 #include "render/png.h"
 #include "tests/test_support.h"
@@ -10,19 +9,12 @@
 namespace recoil::test {
 namespace fs = std::filesystem;
 
-static std::string bunny() { return "'" + source_path("assets/meshes/bunny.obj").string() + "'"; }
-
-static std::string file_bytes(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
+static std::string bunny() { return shell_quote(source_path("assets/meshes/bunny.obj")); }
 
 TEST(TurntableCommand, WritesEveryFrameAtTheAskedSizeByteIdenticalAcrossRuns) {
   const fs::path a = scratch_dir("turntable_a"), b = scratch_dir("turntable_b");
   for (const fs::path& dir : {a, b}) {
-    const CommandResult r = run_recoil("turntable " + bunny() + " --frames 4 --resolution 96x64 -o '" + dir.string() + "'");
+    const CommandResult r = run_recoil("turntable " + bunny() + " --frames 4 --resolution 96x64 -o " + shell_quote(dir));
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
   int frames = 0;
@@ -43,8 +35,8 @@ TEST(TurntableCommand, WritesEveryFrameAtTheAskedSizeByteIdenticalAcrossRuns) {
 TEST(TurntableCommand, TransparentBackgroundAndColour) {
   const fs::path dir = scratch_dir("turntable_transparent");
   const CommandResult r = run_recoil("turntable " + bunny() +
-                                     " --frames 1 --resolution 64x64 --background transparent --color '#ff0000' -o '" +
-                                     dir.string() + "'");
+                                     " --frames 1 --resolution 64x64 --background transparent --color '#ff0000' -o " +
+                                     shell_quote(dir));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const render::Image image = render::read_png(dir / "frame_0001.png");
   // The bunny sits in the middle; it is reddish and opaque there.
@@ -55,17 +47,17 @@ TEST(TurntableCommand, TransparentBackgroundAndColour) {
 
 TEST(TurntableCommand, BadInputIsExit2AndUnwritableOutputIsExit4) {
   const fs::path dir = scratch_dir("turntable_bad");
-  EXPECT_EQ(run_recoil("turntable /nonexistent.obj -o '" + dir.string() + "'").exit_code, 2);
-  const CommandResult resolution = run_recoil("turntable " + bunny() + " --resolution 12by9 -o '" + dir.string() + "'");
+  EXPECT_EQ(run_recoil("turntable /nonexistent.obj -o " + shell_quote(dir)).exit_code, 2);
+  const CommandResult resolution = run_recoil("turntable " + bunny() + " --resolution 12by9 -o " + shell_quote(dir));
   EXPECT_EQ(resolution.exit_code, 2);
   EXPECT_NE(resolution.err.find("--resolution"), std::string::npos) << resolution.err;
-  const CommandResult color = run_recoil("turntable " + bunny() + " --color red -o '" + dir.string() + "'");
+  const CommandResult color = run_recoil("turntable " + bunny() + " --color red -o " + shell_quote(dir));
   EXPECT_EQ(color.exit_code, 2);
   EXPECT_NE(color.err.find("--color"), std::string::npos) << color.err;
   EXPECT_EQ(run_recoil("turntable " + bunny() + " --msaa 3").exit_code, 2);
   std::ofstream(dir / "a_file") << "x";
   const CommandResult blocked =
-      run_recoil("turntable " + bunny() + " --frames 1 --resolution 32x32 -o '" + (dir / "a_file" / "sub").string() + "'");
+      run_recoil("turntable " + bunny() + " --frames 1 --resolution 32x32 -o " + shell_quote(dir / "a_file" / "sub"));
   EXPECT_EQ(blocked.exit_code, 4) << blocked.err;
 }
 
