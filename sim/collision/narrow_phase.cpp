@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include "core/check.h"
 #include "sim/collision/ccd.h"
@@ -87,6 +88,31 @@ std::array<double, 3> snap_to_feature(const std::array<double, 3>& w, const std:
 
 bool on_triangle_boundary(const std::array<double, 3>& w) { return w[0] == 0.0 || w[1] == 0.0 || w[2] == 0.0; }
 
+// PreparedSurface::edge_bend for each of `edges`: the larger distance of each
+// triangle's third vertex from the other triangle's plane, m.
+std::vector<double> edge_bends(const CollisionSurface& surface, const std::vector<std::array<int, 2>>& edges) {
+  constexpr double kUnbounded = std::numeric_limits<double>::infinity();
+  std::vector<std::vector<int>> opposite(edges.size());  // third vertices of each edge's triangles
+  for (int f = 0; f < static_cast<int>(surface.triangles.rows()); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int u = surface.triangles(f, k), v = surface.triangles(f, (k + 1) % 3);
+      const std::array<int, 2> key = {std::min(u, v), std::max(u, v)};
+      const auto it = std::lower_bound(edges.begin(), edges.end(), key);
+      if (it != edges.end() && *it == key)
+        opposite[static_cast<size_t>(it - edges.begin())].push_back(surface.triangles(f, (k + 2) % 3));
+    }
+  std::vector<double> bend(edges.size(), kUnbounded);
+  for (size_t e = 0; e < edges.size(); ++e) {
+    if (opposite[e].size() != 2) continue;
+    const Eigen::Vector3d p = row(surface.x0, edges[e][0]), q = row(surface.x0, edges[e][1]);
+    const Eigen::Vector3d o1 = row(surface.x0, opposite[e][0]), o2 = row(surface.x0, opposite[e][1]);
+    const Eigen::Vector3d n1 = (q - p).cross(o1 - p), n2 = (q - p).cross(o2 - p);
+    if (n1.norm() == 0.0 || n2.norm() == 0.0) continue;  // a degenerate triangle: no plane
+    bend[e] = std::max(std::abs(n1.normalized().dot(o2 - p)), std::abs(n2.normalized().dot(o1 - p)));
+  }
+  return bend;
+}
+
 }  // namespace
 
 std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles) {
@@ -133,6 +159,7 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   out.edge_motion.resize(out.edges.size());
   for (size_t e = 0; e < out.edges.size(); ++e)
     out.edge_motion[e] = std::max(out.vertex_motion[out.edges[e][0]], out.vertex_motion[out.edges[e][1]]);
+  out.edge_bend = edge_bends(surface, out.edges);
   return out;
 }
 
@@ -233,6 +260,10 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
     RECOIL_CHECK(edge_a < edge_b, "self edge pair " << edge_a << ", " << edge_b << " not ordered");
     if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) return std::nullopt;
   }
+  // A flat edge adds nothing its neighbours do not (narrow_phase.h).
+  const double flat = kFeatureSnapShare * margin;
+  if (a.edge_bend[static_cast<size_t>(edge_a)] <= flat || b.edge_bend[static_cast<size_t>(edge_b)] <= flat)
+    return std::nullopt;
   const CollisionSurface& sa = *a.surface;
   const CollisionSurface& sb = *b.surface;
   const Eigen::Vector3d a0 = row(sa.x0, ea[0]), a1 = row(sa.x0, ea[1]);

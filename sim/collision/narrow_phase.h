@@ -15,12 +15,21 @@
 //   closest points (at the impact, if the continuous check found one) lie
 //   more than margin/10 from both edges' ends, and the edges are not
 //   parallel to within the margin (sine of their angle times the longer
-//   edge's length at least the margin).
+//   edge's length at least the margin), and neither edge is flat (its two
+//   triangles within margin/10 of one plane, as the diagonal of a box's
+//   face or a line of a jelly cube's face grid).
 //   A closest point at an end is a vertex, already a vertex-triangle
 //   candidate with the edge as its feature; parallel edges that overlap have
 //   an end of one within the margin of the other, and that vertex holds
 //   them, whereas their own closest points could be anywhere along the
-//   overlap.
+//   overlap. An edge crossing a flat edge touches the plane the flat
+//   edge's triangles span, and the gap along it is linear there: it is
+//   smallest at its own end (a vertex-triangle candidate) or where it leaves
+//   that plane across a bent edge (an edge-edge candidate), so the crossing
+//   adds a row the others imply. In a stack of turned boxes these crossings
+//   of face diagonals sat 1-2 mm from the crossings of the face's border
+//   (normal rows with cosine 0.9999): near-duplicates that the contact
+//   solver cannot tell apart.
 // - vertex v / plane: min(signed distance at x0, at x1) <= margin.
 // Self-contact drops a vertex against the triangles of its one-ring and
 // edges sharing a vertex. Pairs of two prescribed (static or kinematic)
@@ -64,6 +73,8 @@ struct PreparedSurface {
   std::vector<double> triangle_motion;        // #F, max over its vertices
   std::vector<std::array<int, 2>> edges;      // #E, (lo, hi), sorted, unique
   std::vector<double> edge_motion;            // #E
+  std::vector<double> edge_bend;              // #E, m: how far the surface departs from a plane across
+                                              // the edge at x0 (infinite on a boundary or non-manifold edge)
   double max_motion = 0.0;                    // over all vertices
   double length_scale = 0.0;                  // largest |coordinate|, for tolerances
   Aabb box0;                                  // bounding box of x0

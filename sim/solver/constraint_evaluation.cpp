@@ -39,6 +39,7 @@ struct Proposal {
   ContactTrack track;
   bool mode_change = false;
   bool accept = false;
+  double violation = 0.0;  // m/s: how far the contact is from its current mode's law (mode changes only)
 };
 
 // Algorithm 2 for one contact whose normal row is active. u: tangential
@@ -55,6 +56,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
     p.state = ContactState{};
     p.f.setZero();
     p.mode_change = p.accept = true;
+    p.violation = -lambda * track.w[0];
     return p;
   }
   if (frozen && converged && lambda * track.w[0] < -eps2) {
@@ -66,6 +68,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
     p.f.setZero();
     p.track.locked_off = true;
     p.mode_change = p.accept = true;
+    p.violation = -lambda * track.w[0];
     return p;
   }
   if (s.mode == ContactMode::sticking) {
@@ -81,6 +84,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
       p.f.tail<2>().setZero();
       reset_lambda_window(p.track, p.state.lambda_kinetic);
       p.mode_change = p.accept = true;
+      p.violation = excess;
     }
     return p;
   }
@@ -98,6 +102,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
     p.state.lambda_kinetic = 0.0;
     p.state.slip.setZero();
     p.mode_change = p.accept = true;
+    p.violation = undirected ? eps2 : -u.dot(s.slip);
     return p;
   }
   if (rows.mu_kinetic <= 0.0 || !converged) return p;  // frictionless, or u not yet trustworthy
@@ -161,34 +166,30 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
   const int n = static_cast<int>(y.size()) - 3 * m;
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
   const Eigen::VectorXd dv = y.head(n);
-  // J_k dv per contact (dv does not change below), and the most negative
-  // normal slack of an inactive contact, m/s: only the contacts within
-  // kActivationShare of it are switched on (header).
+  // J_k dv per contact (dv does not change below).
   std::vector<Eigen::Vector3d> jdvs(static_cast<size_t>(m), Eigen::Vector3d::Zero());
-  double deepest = 0.0;
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
     if (rows.nodes.empty()) continue;
     jdvs[static_cast<size_t>(k)] = rows_times(rows, dv);
-    if (problem.states[static_cast<size_t>(k)].mode != ContactMode::inactive || tracks[static_cast<size_t>(k)].locked_off)
-      continue;
-    deepest = std::min(deepest, jdvs[static_cast<size_t>(k)][0] - rows.rhs_normal);
   }
-  int changed = 0;
+  std::vector<Proposal> proposals(static_cast<size_t>(m));
+  double worst = 0.0;  // the largest violation among proposed mode changes, m/s
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
-    ContactState& s = problem.states[static_cast<size_t>(k)];
-    ContactTrack& track = tracks[static_cast<size_t>(k)];
+    const ContactState& s = problem.states[static_cast<size_t>(k)];
+    const ContactTrack& track = tracks[static_cast<size_t>(k)];
     const Eigen::Vector3d f = y.segment<3>(n + 3 * k);
+    Proposal& p = proposals[static_cast<size_t>(k)];
+    p = Proposal{s, f, track, false, false};
     if (rows.nodes.empty()) continue;  // touches only fixed DoF: nothing to solve for
     const bool frozen = track.flips >= max_flips;
     const Eigen::Vector3d& jdv = jdvs[static_cast<size_t>(k)];
     const double slack = jdv[0] - rows.rhs_normal;
     const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
-    Proposal p{s, f, track, false, false};
     if (s.mode == ContactMode::inactive) {
       // Activation is allowed even past max_flips: freezing happens in the active state.
-      if (slack < -eps2 && slack <= kActivationShare * deepest && !track.locked_off) {  // penetrating: activate, sliding
+      if (slack < -eps2 && !track.locked_off) {  // penetrating: activate, sliding
         p.state.mode = ContactMode::sliding;
         p.state.lambda_kinetic = 0.0;
         const double speed = u.norm();
@@ -197,12 +198,20 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
         reset_lambda_window(p.track, 0.0);
         p.track.samples = 0;
         p.mode_change = p.accept = true;
+        p.violation = -slack;
       }
     } else {
       p = evaluate_active(rows, s, track, f, slack, u, eps2, frozen, converged);
     }
-    if (!p.accept) continue;
-    s = p.state;
+    if (p.accept && p.mode_change) worst = std::max(worst, p.violation);
+  }
+  // Apply the accepted proposals; mode changes only when among the worst (header).
+  int changed = 0;
+  for (int k = 0; k < m; ++k) {
+    const Proposal& p = proposals[static_cast<size_t>(k)];
+    if (!p.accept || (p.mode_change && p.violation < kChangeShare * worst)) continue;
+    problem.states[static_cast<size_t>(k)] = p.state;
+    ContactTrack& track = tracks[static_cast<size_t>(k)];
     track = p.track;
     y.segment<3>(n + 3 * k) = p.f;
     if (p.mode_change) ++track.flips;
