@@ -105,17 +105,19 @@ TEST(ContactValidation, SlideToStopAndConeIsotropy) {
 // steps; at step 98 cr fails where pgs converges with one active contact.
 // The pivot passes to the next vertex, and cr's first evaluation switches on
 // three neighbours ahead of it together (slack -0.0505..-0.0514 m/s, within
-// kActivationShare of each other; normal rows 3.4 mm apart on a 5 cm ball,
+// kChangeShare of each other; normal rows 3.4 mm apart on a 5 cm ball,
 // cosine 0.98-0.99 in the P_A^-1 metric). Held as equalities, their
 // slightly different right-hand sides need +-40 N s: the ball is flung at
 // 11 m/s, the active set cycles to the cap and the energy triples.
-// Measured in session 5: taking such nearly parallel rows one at a time
-// (deepest first) makes this test pass (a = 1.817, +0.2 %, every step
-// converged), but the 5-box stack needs its corner clusters (edge-edge and
-// vertex-face pairs at one corner, cosine 0.96-0.9999) switched on together
-// and then collapses at landing, even when only clusters whose slacks differ
-// by more than epsilon_2 are split. A compliance of 1e-4 on the rows fixed
-// the sphere and broke the box stack the same way (session 4).
+// Measured in sessions 5 and 6: holding back a contact that the deeper one
+// beside it would resolve (the two-contact problem in the P_A^-1 metric
+// leaves it less than a tenth of its violation) makes the sphere roll
+// through all 120 steps (every step converged, v = 1.075 m/s at 0.6 s
+// against 1.087 for rolling), but whether the 5-box stack then
+// converges at landing depends erratically on that tenth and on
+// kChangeShare (converged for 0.05 and 0.1, not for 0.02, 0.15 or 0.25):
+// luck, not a rule. A compliance of 1e-4 on the rows fixed the sphere and
+// broke the box stack too (session 4).
 TEST(ContactValidation, DISABLED_RollingSphere) {
   const double theta = 15.0 * kPi / 180.0, radius = 0.05, dt = 0.005;
   WorldDesc w = base_world(dt);
