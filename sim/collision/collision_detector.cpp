@@ -15,7 +15,8 @@ namespace recoil::sim {
 struct CollisionDetector::Impl {
   struct SurfaceScenes {
     Triangles triangles;  // the topology the scenes were built for
-    std::vector<std::array<int, 2>> edges;  // unique_edges(triangles)
+    std::vector<std::array<int, 2>> edges;          // unique_edges(triangles)
+    std::vector<std::array<int, 2>> edge_opposite;  // edge_opposites(triangles, edges)
     std::unique_ptr<TriangleScene> faces;
     std::unique_ptr<BoxScene> edge_boxes;  // keyed by the edges' vertices for self queries
   };
@@ -91,9 +92,12 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
       continue;
     }
     const bool same = sc.faces && sc.triangles.rows() == s.triangles.rows() && sc.triangles == s.triangles;
-    if (!same) sc.edges = unique_edges(s.triangles);
+    if (!same) {
+      sc.edges = unique_edges(s.triangles);
+      sc.edge_opposite = edge_opposites(s.triangles, sc.edges);
+    }
     // Validates the surface before Embree sees it.
-    prepared.push_back(prepare_surface(s, static_cast<int>(i), &sc.edges));
+    prepared.push_back(prepare_surface(s, static_cast<int>(i), &sc.edges, &sc.edge_opposite));
     if (same) {
       sc.faces->update_vertices(s.x0);
     } else {

@@ -88,29 +88,19 @@ std::array<double, 3> snap_to_feature(const std::array<double, 3>& w, const std:
 
 bool on_triangle_boundary(const std::array<double, 3>& w) { return w[0] == 0.0 || w[1] == 0.0 || w[2] == 0.0; }
 
-// PreparedSurface::edge_bend for each of `edges`: the larger distance of each
-// triangle's third vertex from the other triangle's plane, m.
-std::vector<double> edge_bends(const CollisionSurface& surface, const std::vector<std::array<int, 2>>& edges) {
-  constexpr double kUnbounded = std::numeric_limits<double>::infinity();
-  std::vector<std::vector<int>> opposite(edges.size());  // third vertices of each edge's triangles
-  for (int f = 0; f < static_cast<int>(surface.triangles.rows()); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int u = surface.triangles(f, k), v = surface.triangles(f, (k + 1) % 3);
-      const std::array<int, 2> key = {std::min(u, v), std::max(u, v)};
-      const auto it = std::lower_bound(edges.begin(), edges.end(), key);
-      if (it != edges.end() && *it == key)
-        opposite[static_cast<size_t>(it - edges.begin())].push_back(surface.triangles(f, (k + 2) % 3));
-    }
-  std::vector<double> bend(edges.size(), kUnbounded);
-  for (size_t e = 0; e < edges.size(); ++e) {
-    if (opposite[e].size() != 2) continue;
-    const Eigen::Vector3d p = row(surface.x0, edges[e][0]), q = row(surface.x0, edges[e][1]);
-    const Eigen::Vector3d o1 = row(surface.x0, opposite[e][0]), o2 = row(surface.x0, opposite[e][1]);
-    const Eigen::Vector3d n1 = (q - p).cross(o1 - p), n2 = (q - p).cross(o2 - p);
-    if (n1.norm() == 0.0 || n2.norm() == 0.0) continue;  // a degenerate triangle: no plane
-    bend[e] = std::max(std::abs(n1.normalized().dot(o2 - p)), std::abs(n2.normalized().dot(o1 - p)));
-  }
-  return bend;
+// How far (m) the surface departs from a plane across `edge` at x0: the
+// larger distance of each of its triangles' third vertex from the other
+// triangle's plane; infinite on a boundary or non-manifold edge.
+double edge_bend(const PreparedSurface& s, int edge) {
+  const std::array<int, 2> ends = s.edges[static_cast<size_t>(edge)];
+  const std::array<int, 2> opposite = s.edge_opposite[static_cast<size_t>(edge)];
+  if (opposite[0] < 0) return std::numeric_limits<double>::infinity();
+  const Points& x = s.surface->x0;
+  const Eigen::Vector3d p = row(x, ends[0]), q = row(x, ends[1]);
+  const Eigen::Vector3d o1 = row(x, opposite[0]), o2 = row(x, opposite[1]);
+  const Eigen::Vector3d n1 = (q - p).cross(o1 - p), n2 = (q - p).cross(o2 - p);
+  if (n1.norm() == 0.0 || n2.norm() == 0.0) return std::numeric_limits<double>::infinity();  // no plane
+  return std::max(std::abs(n1.normalized().dot(o2 - p)), std::abs(n2.normalized().dot(o1 - p)));
 }
 
 }  // namespace
@@ -128,8 +118,28 @@ std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles) {
   return edges;
 }
 
+std::vector<std::array<int, 2>> edge_opposites(const Triangles& triangles, const std::vector<std::array<int, 2>>& edges) {
+  std::vector<std::array<int, 2>> opposite(edges.size(), {-1, -1});
+  std::vector<int> count(edges.size(), 0);  // triangles seen per edge
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int u = triangles(f, k), v = triangles(f, (k + 1) % 3);
+      const std::array<int, 2> key = {std::min(u, v), std::max(u, v)};
+      const auto it = std::lower_bound(edges.begin(), edges.end(), key);
+      if (it == edges.end() || *it != key) continue;
+      const size_t e = static_cast<size_t>(it - edges.begin());
+      if (count[e] < 2) opposite[e][static_cast<size_t>(count[e])] = triangles(f, (k + 2) % 3);
+      ++count[e];
+    }
+  for (size_t e = 0; e < edges.size(); ++e)
+    if (count[e] != 2) opposite[e] = {-1, -1};
+  return opposite;
+}
+
 PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
-                                const std::vector<std::array<int, 2>>* edges) {
+                                const std::vector<std::array<int, 2>>* edges,
+                                const std::vector<std::array<int, 2>>* edge_opposite) {
+  RECOIL_CHECK((edges == nullptr) == (edge_opposite == nullptr), "give both edges and their opposite vertices, or neither");
   PreparedSurface out;
   out.surface = &surface;
   out.index = index;
@@ -159,7 +169,7 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   out.edge_motion.resize(out.edges.size());
   for (size_t e = 0; e < out.edges.size(); ++e)
     out.edge_motion[e] = std::max(out.vertex_motion[out.edges[e][0]], out.vertex_motion[out.edges[e][1]]);
-  out.edge_bend = edge_bends(surface, out.edges);
+  out.edge_opposite = edge_opposite ? *edge_opposite : edge_opposites(surface.triangles, out.edges);
   return out;
 }
 
@@ -260,10 +270,6 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
     RECOIL_CHECK(edge_a < edge_b, "self edge pair " << edge_a << ", " << edge_b << " not ordered");
     if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) return std::nullopt;
   }
-  // A flat edge adds nothing its neighbours do not (narrow_phase.h).
-  const double flat = kFeatureSnapShare * margin;
-  if (a.edge_bend[static_cast<size_t>(edge_a)] <= flat || b.edge_bend[static_cast<size_t>(edge_b)] <= flat)
-    return std::nullopt;
   const CollisionSurface& sa = *a.surface;
   const CollisionSurface& sb = *b.surface;
   const Eigen::Vector3d a0 = row(sa.x0, ea[0]), a1 = row(sa.x0, ea[1]);
@@ -272,6 +278,9 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const double distance = ((a0 + closest.s * (a1 - a0)) - (b0 + closest.t * (b1 - b0))).norm();
   const double motion = a.edge_motion[edge_a] + b.edge_motion[edge_b];
   if (!(distance <= margin + motion)) return std::nullopt;
+  // A flat edge adds nothing its neighbours do not (narrow_phase.h).
+  const double flat = kFeatureSnapShare * margin;
+  if (edge_bend(a, edge_a) <= flat || edge_bend(b, edge_b) <= flat) return std::nullopt;
 
   const double tol = pair_tolerance(a, b);
   const Eigen::Vector3d a0e = row(sa.x1, ea[0]), a1e = row(sa.x1, ea[1]);

@@ -73,8 +73,8 @@ struct PreparedSurface {
   std::vector<double> triangle_motion;        // #F, max over its vertices
   std::vector<std::array<int, 2>> edges;      // #E, (lo, hi), sorted, unique
   std::vector<double> edge_motion;            // #E
-  std::vector<double> edge_bend;              // #E, m: how far the surface departs from a plane across
-                                              // the edge at x0 (infinite on a boundary or non-manifold edge)
+  std::vector<std::array<int, 2>> edge_opposite;  // #E: third vertices of the edge's two triangles
+                                                  // (-1, -1 on a boundary or non-manifold edge)
   double max_motion = 0.0;                    // over all vertices
   double length_scale = 0.0;                  // largest |coordinate|, for tolerances
   Aabb box0;                                  // bounding box of x0
@@ -85,12 +85,19 @@ struct PreparedSurface {
 };
 
 // Checks shapes and indices (a mismatch is a caller bug: RECOIL_CHECK).
-// `edges`, if given, is unique_edges(surface.triangles) from an earlier step.
+// `edges` and `edge_opposite`, if given (both or neither), are
+// unique_edges(surface.triangles) and edge_opposites of them from an
+// earlier step with the same triangles: topology, computed once.
 PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
-                                const std::vector<std::array<int, 2>>* edges = nullptr);
+                                const std::vector<std::array<int, 2>>* edges = nullptr,
+                                const std::vector<std::array<int, 2>>* edge_opposite = nullptr);
 
 // The undirected edges of a triangle list as (lo, hi) vertex pairs, sorted, unique.
 std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles);
+
+// For each of `edges` (unique_edges(triangles)), the third vertices of its
+// two triangles; (-1, -1) unless exactly two triangles share it.
+std::vector<std::array<int, 2>> edge_opposites(const Triangles& triangles, const std::vector<std::array<int, 2>>& edges);
 
 // False when no pair of primitives of a and b can satisfy the candidate rule:
 // their x0 boxes, each inflated by margin/2 + its largest motion, are apart.

@@ -166,13 +166,6 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
   const int n = static_cast<int>(y.size()) - 3 * m;
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
   const Eigen::VectorXd dv = y.head(n);
-  // J_k dv per contact (dv does not change below).
-  std::vector<Eigen::Vector3d> jdvs(static_cast<size_t>(m), Eigen::Vector3d::Zero());
-  for (int k = 0; k < m; ++k) {
-    const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
-    if (rows.nodes.empty()) continue;
-    jdvs[static_cast<size_t>(k)] = rows_times(rows, dv);
-  }
   std::vector<Proposal> proposals(static_cast<size_t>(m));
   double worst = 0.0;  // the largest violation among proposed mode changes, m/s
   for (int k = 0; k < m; ++k) {
@@ -184,7 +177,7 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
     p = Proposal{s, f, track, false, false};
     if (rows.nodes.empty()) continue;  // touches only fixed DoF: nothing to solve for
     const bool frozen = track.flips >= max_flips;
-    const Eigen::Vector3d& jdv = jdvs[static_cast<size_t>(k)];
+    const Eigen::Vector3d jdv = rows_times(rows, dv);
     const double slack = jdv[0] - rows.rhs_normal;
     const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
     if (s.mode == ContactMode::inactive) {
