@@ -8,10 +8,14 @@
 
 namespace recoil::sim {
 
-void reset_lambda_window(ContactTrack& track, double lambda_kinetic) {
+void restart_lambda_window(ContactTrack& track, double lambda_kinetic) {
   track.lambdas.fill(0.0);
   track.lambdas[0] = lambda_kinetic;
   track.samples = 1;
+}
+
+void reset_lambda_window(ContactTrack& track, double lambda_kinetic) {
+  restart_lambda_window(track, lambda_kinetic);
   track.alpha = kAlphaTheta;
   track.last_turn = 0;
   track.streak = 0;
@@ -107,16 +111,25 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   }
   if (rows.mu_kinetic <= 0.0 || !converged) return p;  // frictionless, or u not yet trustworthy
   // Algorithm 3: UpdateKineticFriction.
-  p.state.lambda_kinetic = push_lambda(p.track, std::max(lambda, 0.0));
-  double full_turn = 0.0;  // |u_hat - slip|: the direction error this proposal would remove
+  const double lambda_now = std::max(lambda, 0.0);
+  p.state.lambda_kinetic = push_lambda(p.track, lambda_now);
+  Eigen::Vector2d aim = s.slip;   // the direction the slip turns toward
+  double direction_error = 0.0;   // m/s, see below
   if (speed > eps2) {
     const Eigen::Vector2d u_hat = u / speed;
     if (undirected) {
-      p.state.slip = u_hat;
+      p.state.slip = aim = u_hat;
     } else {
       const double cross = s.slip.x() * u_hat.y() - s.slip.y() * u_hat.x();
       if (std::atan2(std::abs(cross), s.slip.dot(u_hat)) > kEpsTheta) {
-        full_turn = (u_hat - s.slip).norm();
+        // The direction error as a velocity: the smaller of the impulse's
+        // error (mu lambda' w_t |u_hat - slip|) and the slip's sideways part
+        // (|u| |u_hat - slip|). A u known to epsilon_2 gives its direction
+        // only to epsilon_2 / |u|: at a slow slip under a large impulse the
+        // first alone asked for more than any solve resolves (jelly-stack
+        // example: 4000 restarts in one step, turns of 1e-7 rad each).
+        direction_error =
+            std::min(rows.mu_kinetic * p.state.lambda_kinetic * w_t, speed) * (u_hat - s.slip).norm();
         // A turn against the previous one is an overshoot: halve the gain;
         // kAlphaStreak turns the same way: the gain is too timid, double it.
         const int turn = cross > 0.0 ? 1 : -1;
@@ -137,24 +150,53 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
         // solves for a warm start 0.1 rad off; a secant step per contact
         // made that 23 but broke convergence elsewhere).
         const Eigen::Vector2d target = u + w_t * rows.mu_kinetic * s.lambda_kinetic * s.slip;
-        const Eigen::Vector2d aim = target.norm() > 0.0 ? Eigen::Vector2d(target.normalized()) : u_hat;
+        aim = target.norm() > 0.0 ? Eigen::Vector2d(target.normalized()) : u_hat;
         const Eigen::Vector2d moved = s.slip + p.track.alpha * (aim - s.slip);
         if (moved.norm() > 0.0) p.state.slip = moved.normalized();
       }
     }
   }
-  // The impulse change as a velocity: of lambda' (even while the slip is
-  // undirected, so lambda' tracks lambda) and, as for the direction, of the
-  // whole way from lambda' to lambda: the window moves lambda' by a third
-  // of (lambda - oldest sample) per evaluation, which can stay below
-  // epsilon_2 while lambda' is still off (the rollers' first step ended
-  // "converged" with a Coulomb error of 1.5e-4 m/s).
-  const double magnitude_change =
-      rows.mu_kinetic * std::max(std::abs(p.state.lambda_kinetic - s.lambda_kinetic),
-                                 std::abs(std::max(lambda, 0.0) - s.lambda_kinetic));
-  const double turn_change = rows.mu_kinetic * p.state.lambda_kinetic * full_turn;
-  p.accept = std::max(magnitude_change, turn_change) * w_t > eps2 ||
-             (undirected && p.state.slip.squaredNorm() > 0.0);
+  // What the proposal changes, as a velocity: the kinetic impulse it moves
+  // into the right-hand side through w_t, and lambda' on its own (an
+  // undirected slip carries no impulse yet, but lambda' must track lambda
+  // for when it does). A change below epsilon_2 moves no contact by
+  // epsilon_2: the solve may not even iterate, and the next evaluation sees
+  // the same u. Accepted anyway, such changes repeated with no iterations
+  // between (jelly-stack example: 4000 restarts in one step). So only a
+  // change above epsilon_2 is accepted. When the damped step is below it
+  // while the law is still off by more (the window moves lambda' by a third
+  // of lambda - oldest sample per evaluation; a decayed gain turns the slip
+  // by a fraction of the way: the rollers' first step once ended
+  // "converged" with a Coulomb error of 1.5e-4 m/s), the step grows to
+  // kRegisteredChange epsilon_2 toward the whole way (lambda' = lambda,
+  // slip = aim), never past it. Not the whole way at once: coupled contacts
+  // then swing period-2 again (cr_plain on the FEM cube of
+  // convergence_test never converged). A contact whose whole way changes
+  // nothing (frozen sliding while its slip runs backwards: the aim is its
+  // own slip) keeps its state, and the end of the solve reports it.
+  const auto impulse_change = [&](const ContactState& next) {
+    return rows.mu_kinetic * w_t *
+           std::max((next.lambda_kinetic * next.slip - s.lambda_kinetic * s.slip).norm(),
+                    std::abs(next.lambda_kinetic - s.lambda_kinetic));
+  };
+  const double magnitude_error = rows.mu_kinetic * std::abs(lambda_now - s.lambda_kinetic) * w_t;
+  double applied = impulse_change(p.state);
+  if (applied <= eps2 && std::max(magnitude_error, direction_error) > eps2) {
+    ContactState whole = p.state;
+    whole.lambda_kinetic = lambda_now;
+    whole.slip = aim;
+    const double whole_change = impulse_change(whole);
+    if (whole_change > eps2) {
+      const double t = std::min(1.0, kRegisteredChange * eps2 / whole_change);
+      p.state.lambda_kinetic = s.lambda_kinetic + t * (lambda_now - s.lambda_kinetic);
+      restart_lambda_window(p.track, p.state.lambda_kinetic);
+      const Eigen::Vector2d moved = s.slip + t * (aim - s.slip);
+      if (moved.norm() > 0.0) p.state.slip = moved.normalized();
+      p.track.alpha = std::max(p.track.alpha, t);
+      applied = impulse_change(p.state);
+    }
+  }
+  p.accept = applied > eps2 || (undirected && p.state.slip.squaredNorm() > 0.0);
   return p;
 }
 

@@ -22,12 +22,14 @@
 //   halve, double, halve on random coupled problems). The angle is measured
 //   with atan2(cross, dot), exact near 0 (cos(1e-9) is 1.0 in double, so a
 //   cosine test turned rounding noise into turns of random sign). kEpsTheta
-//   = 1e-10 rad only keeps round-off out; the real threshold is epsilon_2: a
-//   turn is accepted when the impulse change of the *full* turn to u (not
-//   of the damped step) exceeds it, so the friction impulse ends as accurate
-//   as the rest of the solve and a decayed gain cannot hide a wrong
-//   direction. A rejected proposal leaves the contact's state and track as
-//   they were;
+//   = 1e-10 rad only keeps round-off out; the real threshold is epsilon_2,
+//   twice: the law must be off by more than it (the direction error counts
+//   as min(mu lambda' w_t, |u|) |u_hat - slip|, since u is only known to
+//   epsilon_2), and the change made must exceed it, or the solve cannot see
+//   it; a damped step too small to register grows to kRegisteredChange
+//   epsilon_2 toward the whole way, so a decayed gain cannot hide a wrong
+//   direction either (the .cpp says why). A rejected proposal leaves the
+//   contact's state and track as they were;
 // - sticking <-> sliding changes, like Algorithm 3, are made only at
 //   converged evaluations: decided on the half-converged gamma and u of
 //   mid-solve evaluations they cycled on stiff resting bodies (boundary
@@ -51,6 +53,7 @@ inline constexpr double kEpsTheta = 1e-10;  // rad
 inline constexpr double kReversal = 0.5;
 inline constexpr int kAlphaStreak = 4;
 inline constexpr double kChangeShare = 0.9;
+inline constexpr double kRegisteredChange = 2.0;  // in epsilon_2: the smallest friction step taken
 
 // Solver-side bookkeeping of one contact, beside its ContactState.
 struct ContactTrack {
@@ -64,8 +67,11 @@ struct ContactTrack {
   int streak = 0;                               // accepted turns the same way since alpha last changed
 };
 
-// Starts the moving average of a sliding contact at `lambda_kinetic`.
+// Starts the moving average of a sliding contact at `lambda_kinetic`, and
+// its direction gain afresh.
 void reset_lambda_window(ContactTrack& track, double lambda_kinetic);
+// Starts the moving average only, keeping the direction gain.
+void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 
 // Evaluates every contact of `problem` at y (#DoF + 3 #contacts); applies
 // the accepted changes to problem.states and to the multipliers in y.
