@@ -122,14 +122,8 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
     } else {
       const double cross = s.slip.x() * u_hat.y() - s.slip.y() * u_hat.x();
       if (std::atan2(std::abs(cross), s.slip.dot(u_hat)) > kEpsTheta) {
-        // The direction error as a velocity: the smaller of the impulse's
-        // error (mu lambda' w_t |u_hat - slip|) and the slip's sideways part
-        // (|u| |u_hat - slip|). A u known to epsilon_2 gives its direction
-        // only to epsilon_2 / |u|: at a slow slip under a large impulse the
-        // first alone asked for more than any solve resolves (jelly-stack
-        // example: 4000 restarts in one step, turns of 1e-7 rad each).
-        direction_error =
-            std::min(rows.mu_kinetic * p.state.lambda_kinetic * w_t, speed) * (u_hat - s.slip).norm();
+        // The same measure as the KKT residual's, on lambda'.
+        direction_error = slip_direction_error(rows.mu_kinetic * p.state.lambda_kinetic * w_t, u, s.slip);
         // A turn against the previous one is an overshoot: halve the gain;
         // kAlphaStreak turns the same way: the gain is too timid, double it.
         const int turn = cross > 0.0 ? 1 : -1;

@@ -23,9 +23,9 @@
 //   with atan2(cross, dot), exact near 0 (cos(1e-9) is 1.0 in double, so a
 //   cosine test turned rounding noise into turns of random sign). kEpsTheta
 //   = 1e-10 rad only keeps round-off out; the real threshold is epsilon_2,
-//   twice: the law must be off by more than it (the direction error counts
-//   as min(mu lambda' w_t, |u|) |u_hat - slip|, since u is only known to
-//   epsilon_2), and the change made must exceed it, or the solve cannot see
+//   twice: the law must be off by more than it (the direction error is
+//   slip_direction_error of contact_rows_ops.h, the KKT residual's measure),
+//   and the change made must exceed it, or the solve cannot see
 //   it; a damped step too small to register grows to kRegisteredChange
 //   epsilon_2 toward the whole way, so a decayed gain cannot hide a wrong
 //   direction either (the .cpp says why). A rejected proposal leaves the
@@ -80,8 +80,8 @@ void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 // (|gamma| - mu_s lambda) w_t; sliding to sticking: the reversed slip
 // speed), and only those at least kChangeShare of the largest in this
 // evaluation are applied; the rest wait for a later evaluation (updates of
-// a sliding contact's lambda' and direction are not mode changes and always
-// apply). Switching on every violated contact at once over-constrains a
+// a sliding contact's lambda' and direction are not mode changes: the share
+// does not hold them back). Switching on every violated contact at once over-constrains a
 // body landing on a corner or a curved face: on the bunny pile, 80 of 927
 // candidates came on together where the solution has 6, the next solves
 // switched them off down to 4, the one after on again to 82, and the active
@@ -96,8 +96,9 @@ void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 // the cap (9 of the first 15 steps unconverged once the redundant crossings
 // of face diagonals were gone, narrow_phase.h; with them, the extra rows
 // had happened to hide it). The largest change alone, then the next, lands
-// where pgs does: 28 active contacts, every step converged. The largest is taken over the whole problem, so a big change
-// on one body holds back small ones elsewhere for an evaluation or two.
+// where pgs does: 28 active contacts, every step converged. The largest is
+// taken over the whole problem, so a big change on one body holds back
+// small ones elsewhere for an evaluation or two.
 // Contacts past `max_flips` mode changes are frozen in the active state:
 // an inactive one may still activate, an active one keeps its friction
 // mode and does not separate mid-solve. One frozen contact that pulls

@@ -1,6 +1,7 @@
 #include "sim/solver/contact_rows_ops.h"
 
 #include <Eigen/LU>
+#include <algorithm>
 
 #include "core/check.h"
 
@@ -51,6 +52,12 @@ Eigen::Vector2d tangent_impulse(const ContactRows& rows, const ContactState& sta
     case ContactMode::inactive: break;
   }
   return Eigen::Vector2d::Zero();
+}
+
+double slip_direction_error(double friction_speed, const Eigen::Vector2d& u, const Eigen::Vector2d& slip) {
+  const double speed = u.norm();
+  if (speed == 0.0) return 0.0;
+  return std::min(friction_speed, speed) * (u / speed - slip).norm();
 }
 
 }  // namespace recoil::sim

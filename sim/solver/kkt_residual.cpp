@@ -13,20 +13,11 @@ double KktResidual::max() const { return std::max({momentum, penetration, comple
 namespace {
 
 // Coulomb's law for a sliding contact, as a velocity: the impulse must be
-// mu_k lambda opposite the slip u. The direction error |slip - u/|u|| counts
-// as the smaller of two velocities: the impulse's error (mu_k lambda w_t
-// times it) and the slip's sideways part (|u| times it). A slip known to
-// within epsilon gives its direction only to within epsilon / |u|, so at a
-// slow slip under a large impulse the first would demand more accuracy than
-// any solve of u has (constraint_evaluation.h); and a wrong direction at a
-// vanishing slip is a sticking contact in disguise.
+// mu_k lambda opposite the slip u (direction error: contact_rows_ops.h).
 double sliding_violation(const ContactRows& rows, const ContactState& s, const Eigen::Vector2d& u, double w_t) {
   double err = rows.mu_kinetic * std::abs(s.lambda_kinetic - s.lambda) * w_t;
-  const double speed = u.norm();
-  if (rows.mu_kinetic > 0.0 && s.lambda > 0.0) {
-    const Eigen::Vector2d want = speed > 0.0 ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
-    err = std::max(err, std::min(rows.mu_kinetic * s.lambda * w_t, speed) * (s.slip - want).norm());
-  }
+  if (rows.mu_kinetic > 0.0 && s.lambda > 0.0)
+    err = std::max(err, slip_direction_error(rows.mu_kinetic * s.lambda * w_t, u, s.slip));
   return err;
 }
 
