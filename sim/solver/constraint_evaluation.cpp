@@ -194,10 +194,65 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   return p;
 }
 
+// The cosine of the angle between the normal rows of contacts a and b in
+// the P_A^-1 metric: (J_a P_A^-1 J_b^T) / sqrt(w_a w_b), over the nodes
+// they share (node lists are ascending). 0 when they share none.
+double normal_row_cosine(const ContactRows& a, const ContactRows& b, double w_a, double w_b,
+                         const std::vector<Eigen::Matrix3d>& inv_diag) {
+  if (!(w_a > 0.0 && w_b > 0.0)) return 0.0;
+  double cross = 0.0;
+  size_t i = 0, j = 0;
+  while (i < a.nodes.size() && j < b.nodes.size()) {
+    if (a.nodes[i] < b.nodes[j]) {
+      ++i;
+    } else if (b.nodes[j] < a.nodes[i]) {
+      ++j;
+    } else {
+      cross += a.blocks[i].row(0).dot(inv_diag[static_cast<size_t>(a.nodes[i])] * b.blocks[j].row(0).transpose());
+      ++i;
+      ++j;
+    }
+  }
+  return cross / std::sqrt(w_a * w_b);
+}
+
+// Of the activations accepted in one evaluation, the deepest goes first;
+// one whose normal row is within kParallel of a row already taken waits for
+// a later evaluation (the header says why). Mid-solve, the active rows count
+// as taken too; at a converged evaluation they do not, or a contact beside
+// a loaded one could never come on.
+void hold_back_parallel_activations(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
+                                    const std::vector<Eigen::Matrix3d>& inv_diag, bool converged,
+                                    std::vector<Proposal>& proposals) {
+  std::vector<int> order, taken;
+  for (size_t k = 0; k < proposals.size(); ++k) {
+    const bool active = problem.states[k].mode != ContactMode::inactive;
+    if (active && !converged) taken.push_back(static_cast<int>(k));
+    const Proposal& p = proposals[k];
+    if (!active && p.accept && p.mode_change) order.push_back(static_cast<int>(k));
+  }
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return proposals[static_cast<size_t>(a)].violation > proposals[static_cast<size_t>(b)].violation;
+  });
+  for (int k : order) {
+    Proposal& p = proposals[static_cast<size_t>(k)];
+    const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
+    for (int t : taken) {
+      const double cosine = normal_row_cosine(rows, problem.rows[static_cast<size_t>(t)], tracks[static_cast<size_t>(k)].w[0],
+                                              tracks[static_cast<size_t>(t)].w[0], inv_diag);
+      if (cosine > kParallel) {
+        p.accept = false;
+        break;
+      }
+    }
+    if (p.accept) taken.push_back(k);
+  }
+}
+
 }  // namespace
 
 int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
-                         double eps2, int max_flips, bool converged) {
+                         const std::vector<Eigen::Matrix3d>& inv_diag, double eps2, int max_flips, bool converged) {
   const int m = static_cast<int>(problem.rows.size());
   const int n = static_cast<int>(y.size()) - 3 * m;
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
@@ -234,11 +289,15 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
     }
     if (p.accept && p.mode_change) worst = std::max(worst, p.violation);
   }
-  // Apply the accepted proposals; mode changes only when among the worst (header).
+  // Mode changes only when among the worst (header).
+  for (Proposal& p : proposals)
+    if (p.accept && p.mode_change && p.violation < kChangeShare * worst) p.accept = false;
+  hold_back_parallel_activations(problem, tracks, inv_diag, converged, proposals);
+  // Apply the accepted proposals.
   int changed = 0;
   for (int k = 0; k < m; ++k) {
     const Proposal& p = proposals[static_cast<size_t>(k)];
-    if (!p.accept || (p.mode_change && p.violation < kChangeShare * worst)) continue;
+    if (!p.accept) continue;
     problem.states[static_cast<size_t>(k)] = p.state;
     ContactTrack& track = tracks[static_cast<size_t>(k)];
     track = p.track;

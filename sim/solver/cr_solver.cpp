@@ -334,7 +334,7 @@ bool CrSolver::step() {
     const double decades = res > m_settings.tolerance ? std::log10(res / m_settings.tolerance) : 0.0;
     const int interval = std::max(1, static_cast<int>(std::floor(decades * decades / 2.0)));
     if (m_since_restart % interval == 0 &&
-        evaluate_constraints(m_problem, m_tracks, m_y, m_settings.constraint_tolerance, m_settings.max_flips, false) > 0) {
+        evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, m_settings.constraint_tolerance, m_settings.max_flips, false) > 0) {
       restart_after_change();
       return false;
     }
@@ -364,7 +364,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
     return Finish::go_on;
   }
   const double eps2 = m_settings.constraint_tolerance;
-  if (evaluate_constraints(m_problem, m_tracks, m_y, eps2, m_settings.max_flips, true) > 0) {
+  if (evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, eps2, m_settings.max_flips, true) > 0) {
     restart_after_change();
     return Finish::go_on;
   }

@@ -100,26 +100,13 @@ TEST(ContactValidation, SlideToStopAndConeIsotropy) {
   EXPECT_LT(creep_d, 1e-4);
 }
 
-// Disabled (issue #5): a faceted sphere (2562 vertices) rolls without
-// slipping at a = 1.80 m/s^2 (-0.8 % of (5/7) g sin(theta) = 1.81) for 97
-// steps; at step 98 cr fails where pgs converges with one active contact.
-// The pivot passes to the next vertex, and cr's first evaluation switches on
-// three neighbours ahead of it together (slack -0.0505..-0.0514 m/s, within
-// kChangeShare of each other; normal rows 3.4 mm apart on a 5 cm ball,
-// cosine 0.98-0.99 in the P_A^-1 metric). Held as equalities, their
-// slightly different right-hand sides need +-40 N s: the ball is flung at
-// 11 m/s, the active set cycles to the cap and the energy triples.
-// Measured in sessions 5 and 6: holding back a contact that the deeper one
-// beside it would resolve (the two-contact problem in the P_A^-1 metric
-// leaves it less than a tenth of its violation) makes the sphere roll
-// through all 120 steps (every step converged, v = 1.075 m/s at 0.6 s
-// against 1.087 for rolling), but whether the 5-box stack then
-// converges at landing depends erratically on that tenth and on
-// kChangeShare (converged for 0.05 and 0.1, not for 0.02, 0.15 or 0.25):
-// luck, not a rule. A compliance of 1e-4 on the rows fixed the sphere and
-// broke the box stack too (session 4). Session 7's change to the sliding
-// update did not help: the test measures a = 12.3 m/s^2 (the ball flung).
-TEST(ContactValidation, DISABLED_RollingSphere) {
+// A faceted sphere (2562 vertices) rolls without slipping. Its pivot
+// passes from vertex to vertex, and the vertices ahead of it have nearly
+// parallel normal rows (cosine 0.98-0.99 in the P_A^-1 metric): switched on
+// together (up to session 7), they flung the ball (a = 12.3 m/s^2); the
+// parallel-row rule of constraint_evaluation.h switches them on one at a
+// time, and every step converges.
+TEST(ContactValidation, RollingSphere) {
   const double theta = 15.0 * kPi / 180.0, radius = 0.05, dt = 0.005;
   WorldDesc w = base_world(dt);
   w.planes.push_back(incline(theta, friction(0.6, 0.6)));
@@ -137,9 +124,11 @@ TEST(ContactValidation, DISABLED_RollingSphere) {
   const double err = std::abs(a - expected) / expected;
   const double slip = std::abs(v2 + w2 * radius);  // rolling: v = -w_z r down the slope
   std::cout << "rolling sphere (15 deg, mu 0.6): a = " << a << " m/s^2, expected " << expected
-            << ", relative error " << err << ", slip speed " << slip << " m/s (w " << w1 << " -> " << w2 << ")\n";
+            << ", relative error " << err << ", slip speed " << slip << " m/s (w " << w1 << " -> " << w2 << "), unconverged steps "
+            << world.counters().solver_not_converged << "\n";
   EXPECT_LT(err, 0.03);
   EXPECT_LT(slip, 0.03 * std::abs(v2));
+  EXPECT_EQ(world.counters().solver_not_converged, 0);
 }
 
 }  // namespace
