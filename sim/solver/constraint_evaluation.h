@@ -113,9 +113,10 @@ void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 // ahead came on together (cosines 0.98-0.99 with each other and the
 // sticking pivot), their right-hand sides were met only by impulses of
 // +-40 N s, and the ball was flung at 11 m/s. One at a time, the solve
-// that follows says whether the next is still needed; mid-solve, three
-// contacts about a pivot also cycled on and off through max_flips (1-9 of
-// 120 steps unconverged over the sphere variants of session 8, now none).
+// that follows says whether the next is still needed. Without the
+// mid-solve part, three contacts about a pivot still cycled on and off
+// through max_flips (up to 9 of 120 steps unconverged over six sphere
+// variants of session 8; with it, none).
 // The rigid box stack, whose corner rows have cosines -0.5..0.25, still
 // switches a flat landing on at once; it stands for kParallel from 0.7 to
 // 0.99 and falls at 0.5.
