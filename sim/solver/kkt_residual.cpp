@@ -24,10 +24,16 @@ double sliding_violation(const ContactRows& rows, const ContactState& s, const E
 }  // namespace
 
 KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv) {
+  RECOIL_CHECK(problem.A != nullptr);
+  return kkt_residual(problem, dv, inverse_diagonal_blocks(*problem.A));
+}
+
+KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv,
+                         const std::vector<Eigen::Matrix3d>& inv_diag) {
   RECOIL_CHECK(problem.A != nullptr && problem.rows.size() == problem.states.size());
   const BlockSparseMatrix& A = *problem.A;
   RECOIL_CHECK(dv.size() == A.rows() && problem.b.size() == A.rows());
-  const std::vector<Eigen::Matrix3d> inv_diag = inverse_diagonal_blocks(A);
+  RECOIL_CHECK(static_cast<int>(inv_diag.size()) == A.block_rows());
 
   KktResidual out;
   Eigen::VectorXd g;

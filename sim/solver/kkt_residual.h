@@ -4,6 +4,7 @@
 // m/s: momentum errors are scaled by the block-Jacobi inverse of A, impulse
 // errors by the row's effective inverse mass diag(J P_A^-1 J^T).
 #include <Eigen/Core>
+#include <vector>
 
 #include "sim/solver/contact_problem.h"
 
@@ -19,5 +20,9 @@ struct KktResidual {
 
 // dv: #DoF; problem.states hold the multipliers (as the solvers leave them).
 KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv);
+// The same with P_A^-1 (inverse_diagonal_blocks of problem.A) given, for a
+// caller that measures many iterates of one problem.
+KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv,
+                         const std::vector<Eigen::Matrix3d>& inv_diag);
 
 }  // namespace recoil::sim
