@@ -194,28 +194,6 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   return p;
 }
 
-// The cosine of the angle between the normal rows of contacts a and b in
-// the P_A^-1 metric: (J_a P_A^-1 J_b^T) / sqrt(w_a w_b), over the nodes
-// they share (node lists are ascending). 0 when they share none.
-double normal_row_cosine(const ContactRows& a, const ContactRows& b, double w_a, double w_b,
-                         const std::vector<Eigen::Matrix3d>& inv_diag) {
-  if (!(w_a > 0.0 && w_b > 0.0)) return 0.0;
-  double cross = 0.0;
-  size_t i = 0, j = 0;
-  while (i < a.nodes.size() && j < b.nodes.size()) {
-    if (a.nodes[i] < b.nodes[j]) {
-      ++i;
-    } else if (b.nodes[j] < a.nodes[i]) {
-      ++j;
-    } else {
-      cross += a.blocks[i].row(0).dot(inv_diag[static_cast<size_t>(a.nodes[i])] * b.blocks[j].row(0).transpose());
-      ++i;
-      ++j;
-    }
-  }
-  return cross / std::sqrt(w_a * w_b);
-}
-
 // Of the activations accepted in one evaluation, the deepest goes first;
 // one whose normal row is within kParallel of a row already taken waits for
 // a later evaluation (the header says why). Mid-solve, the active rows count
@@ -237,10 +215,12 @@ void hold_back_parallel_activations(const ContactProblem& problem, const std::ve
   for (int k : order) {
     Proposal& p = proposals[static_cast<size_t>(k)];
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
+    const double w_k = tracks[static_cast<size_t>(k)].w[0];
     for (int t : taken) {
-      const double cosine = normal_row_cosine(rows, problem.rows[static_cast<size_t>(t)], tracks[static_cast<size_t>(k)].w[0],
-                                              tracks[static_cast<size_t>(t)].w[0], inv_diag);
-      if (cosine > kParallel) {
+      // The cosine of the two normal rows in the P_A^-1 metric.
+      const double w_t = tracks[static_cast<size_t>(t)].w[0];
+      const double product = normal_rows_product(rows, problem.rows[static_cast<size_t>(t)], inv_diag);
+      if (w_k > 0.0 && w_t > 0.0 && product > kParallel * std::sqrt(w_k * w_t)) {
         p.accept = false;
         break;
       }

@@ -45,6 +45,24 @@ Eigen::Matrix3d contact_block(const ContactRows& rows, const std::vector<Eigen::
   return W;
 }
 
+double normal_rows_product(const ContactRows& a, const ContactRows& b, const std::vector<Eigen::Matrix3d>& inv_diag) {
+  // Node lists are ascending: walk both once.
+  double product = 0.0;
+  size_t i = 0, j = 0;
+  while (i < a.nodes.size() && j < b.nodes.size()) {
+    if (a.nodes[i] < b.nodes[j]) {
+      ++i;
+    } else if (b.nodes[j] < a.nodes[i]) {
+      ++j;
+    } else {
+      product += a.blocks[i].row(0).dot(inv_diag[static_cast<size_t>(a.nodes[i])] * b.blocks[j].row(0).transpose());
+      ++i;
+      ++j;
+    }
+  }
+  return product;
+}
+
 Eigen::Vector2d tangent_impulse(const ContactRows& rows, const ContactState& state) {
   switch (state.mode) {
     case ContactMode::sticking: return state.gamma;

@@ -27,6 +27,11 @@ Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const std::vecto
 // A replaced by its block diagonal, 1/kg (its diagonal is effective_inverse_mass).
 Eigen::Matrix3d contact_block(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag);
 
+// J_a,n P_A^-1 J_b,n^T: the coupling of two contacts' normal rows through
+// the DoF nodes they share, 1/kg (0 when they share none; for a = b it is
+// effective_inverse_mass(a)[0]).
+double normal_rows_product(const ContactRows& a, const ContactRows& b, const std::vector<Eigen::Matrix3d>& inv_diag);
+
 // The friction impulse (t1, t2) that `state` applies: gamma when sticking,
 // -mu_kinetic lambda' slip when sliding, 0 when inactive.
 Eigen::Vector2d tangent_impulse(const ContactRows& rows, const ContactState& state);
