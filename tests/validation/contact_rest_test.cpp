@@ -126,9 +126,9 @@ TEST(ContactValidation, JellyStackStands) {
   EXPECT_LT(penetration, 0.002);
 }
 
-// The bottom cube of the jelly-stack example (20 cm, E 2e4, Poisson 0.45,
-// Rayleigh damping for a 5 % ratio, 6x6 contact grid, dt 4 ms) lands and
-// settles with a third to a half of its contacts sliding slowly outward.
+// The bottom cube of the jelly-stack example as it was until session 8
+// (20 cm, E 2e4, Poisson 0.45, Rayleigh damping for a 5 % ratio, 6x6
+// contact grid, dt 4 ms) lands and settles with a third to a half of its contacts sliding slowly outward.
 // Algorithm 3 used to accept a direction turn by its full angle while a
 // slip of 2-4 mm/s under a 0.3 m/s friction impulse moved the slip by 1e-7
 // rad per evaluation, too little for the solve to register: 4000 restarts
