@@ -76,6 +76,8 @@ void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 
 // Evaluates every contact of `problem` at y (#DoF + 3 #contacts); applies
 // the accepted changes to problem.states and to the multipliers in y.
+// inv_diag is P_A^-1, one 3x3 block per node (inverse_diagonal_blocks of
+// problem.A): the metric in which rows count as parallel (below).
 // The worst violations first: each proposed mode change has a violation in
 // m/s (activation: -slack; separation: -lambda w_n; sticking to sliding:
 // (|gamma| - mu_s lambda) w_t; sliding to sticking: the reversed slip
