@@ -121,7 +121,9 @@ void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 // variants of session 8; with it, none).
 // The rigid box stack, whose corner rows have cosines -0.5..0.25, still
 // switches a flat landing on at once; it stands for kParallel from 0.7 to
-// 0.99 and falls at 0.5.
+// 0.99 and falls at 0.5. The cosine is signed: rows pointing against each
+// other (a body pinched from two sides) hold it from both sides, and
+// neither can stand in for the other.
 // Contacts past `max_flips` mode changes are frozen in the active state:
 // an inactive one may still activate, an active one keeps its friction
 // mode and does not separate mid-solve. One frozen contact that pulls

@@ -68,6 +68,7 @@ class CrSolver {
   double frozen_violation(int k, const Eigen::VectorXd& dv) const;
   double kkt_of(const Eigen::VectorXd& y, const std::vector<ContactState>& states);
   void remember_if_best();
+  void remeasure_best();
   void return_best_solved();
   bool out_of_budget() const { return m_stats.iterations + m_stats.restarts >= m_settings.max_iterations; }
 
@@ -90,8 +91,9 @@ class CrSolver {
   bool m_residual_true = false;
   bool m_stationary = false;       // scaled |B C^-1 r| < epsilon_1 (Algorithm 1 line 21)
   bool m_relinearized_ok = false;  // the last relinearize moved nothing beyond epsilon_2, and nothing changed since
-  // The solved iterate closest to a solution so far (run() explains): y and
-  // the states it was solved for, and its KKT residual (m/s) at the time.
+  // The solved iterate closest to a solution so far (return_best_solved()
+  // explains): y, the states it was solved for, and its KKT residual (m/s)
+  // on the rows as they are now (re-measured whenever they change).
   Eigen::VectorXd m_best_y;
   std::vector<ContactState> m_best_states;
   double m_best_kkt = std::numeric_limits<double>::infinity();
@@ -386,6 +388,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
     m_stats.new_contacts += added;
     grow_contacts();
     refresh_rows();
+    remeasure_best();
     restart_after_change();
     return Finish::go_on;
   }
@@ -398,6 +401,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   // The normals and tangents may have turned even when the right-hand sides
   // barely moved: solve again on the recomputed residual before returning.
   refresh_rows();
+  remeasure_best();
   build_rhs();
   restart();
   return Finish::go_on;
@@ -442,7 +446,7 @@ double CrSolver::kkt_of(const Eigen::VectorXd& y, const std::vector<ContactState
 }
 
 // Called where y solves the system of the current states (true residual
-// below epsilon_1), before they are evaluated.
+// below epsilon_1, or stationary), before they are evaluated.
 void CrSolver::remember_if_best() {
   const double kkt = kkt_of(m_y, m_problem.states);
   if (kkt >= m_best_kkt) return;
@@ -451,7 +455,15 @@ void CrSolver::remember_if_best() {
   m_best_states = m_problem.states;
 }
 
-// At the iteration cap, y is wherever the last restart left it: mid-way
+// The rows changed (new contacts, re-linearisation): the best state's KKT
+// residual is measured again on them, so that later states compete with it
+// on the same rows (new contacts count against it as inactive).
+void CrSolver::remeasure_best() {
+  if (m_best_y.size() > 0) m_best_kkt = kkt_of(m_best_y, m_best_states);
+}
+
+// When the solve ends unconverged (the iteration cap, or the cap on
+// re-linearisations), y is wherever the last restart left it: mid-way
 // through a Krylov solve for an active set that the next evaluation may
 // have changed again (jelly-stack example, a cube landing on another: KKT
 // residuals of 0.1-13 m/s at the cap; a soft FEM cube at rest, capped at
@@ -463,7 +475,7 @@ void CrSolver::remember_if_best() {
 // (flip counts) stay those of the final iterate.
 void CrSolver::return_best_solved() {
   if (m_best_y.size() == 0) return;
-  if (kkt_of(m_y, m_problem.states) <= kkt_of(m_best_y, m_best_states)) return;
+  if (kkt_of(m_y, m_problem.states) <= m_best_kkt) return;
   m_y.setZero();
   m_y.head(m_best_y.size()) = m_best_y;
   m_problem.states = m_best_states;

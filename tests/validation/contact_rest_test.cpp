@@ -221,11 +221,12 @@ TEST(ContactValidation, DISABLED_BunnyPileStaysWithinMargin) {
 }
 
 // Disabled (issue #5): cr does not converge on about half the steps from
-// step 10 (the block between the rollers; 19 of the first 40 steps), and
+// step 10 (the block between the rollers; 20 of the first 40 steps), and
 // at step 96 the block inverts (step 42 before session 8). pgs inverts it
-// too, at step 104, on steps it solves to 1.5e-3 m/s, and so does a
-// stable Neo-Hookean block (step 118): the scene needs changing (a finer
-// lattice, a wider gap) before it can judge cr. Sticking and sliding
+// too, at step 104 (its capped steps at KKT 1e-6..1.5e-3 m/s), and so
+// it does a stable Neo-Hookean block (step 118) and a 4-cell lattice (step
+// 106): the scene needs changing (a wider gap, gentler rollers) before it
+// can judge cr. Sticking and sliding
 // flips reach max_flips, frozen contacts end with negative lambda, and
 // re-linearising against the turning cylinders changes the rows by more
 // than epsilon_2 each time until the cap of 16. Session 6 took the crossings of flat edges
