@@ -27,6 +27,13 @@ constexpr double kBreakdown = 1e-12;
 // for stiff FEM), so it must also be this small relative to |r|.
 constexpr double kStationary = 1e-6;
 
+// Copies an active contact k's multipliers out of y = [dv (n); f] into s:
+// lambda, and gamma when sticking (zero otherwise).
+void take_multipliers(const Eigen::VectorXd& y, int n, int k, ContactState& s) {
+  s.lambda = y[n + 3 * k];
+  s.gamma = s.mode == ContactMode::sticking ? Eigen::Vector2d(y.segment<2>(n + 3 * k + 1)) : Eigen::Vector2d::Zero();
+}
+
 class CrSolver {
  public:
   CrSolver(ContactProblem& problem, const ContactSolverSettings& settings, bool preconditioned,
@@ -432,12 +439,8 @@ double CrSolver::frozen_violation(int k, const Eigen::VectorXd& dv) const {
 double CrSolver::kkt_of(const Eigen::VectorXd& y, const std::vector<ContactState>& states) {
   std::vector<ContactState> filled(static_cast<size_t>(contacts()));
   for (size_t k = 0; k < states.size(); ++k) {
-    ContactState& s = filled[k];
-    s = states[k];
-    if (s.mode == ContactMode::inactive) continue;
-    s.lambda = y[m_n + 3 * static_cast<int>(k)];
-    s.gamma = s.mode == ContactMode::sticking ? Eigen::Vector2d(y.segment<2>(m_n + 3 * static_cast<int>(k) + 1))
-                                              : Eigen::Vector2d::Zero();
+    filled[k] = states[k];
+    if (filled[k].mode != ContactMode::inactive) take_multipliers(y, m_n, static_cast<int>(k), filled[k]);
   }
   std::swap(filled, m_problem.states);
   const double kkt = kkt_residual(m_problem, y.head(m_n), m_inv_diag).max();
@@ -479,8 +482,7 @@ void CrSolver::return_best_solved() {
   m_y.setZero();
   m_y.head(m_best_y.size()) = m_best_y;
   m_problem.states = m_best_states;
-  m_problem.states.resize(static_cast<size_t>(contacts()));  // contacts added since stay inactive
-  for (size_t k = m_best_states.size(); k < m_problem.states.size(); ++k) m_problem.states[k] = ContactState{};
+  m_problem.states.resize(static_cast<size_t>(contacts()));  // contacts added since: inactive (default)
   build_rhs();
   recompute_residual();
 }
@@ -522,8 +524,7 @@ void CrSolver::run(Eigen::VectorXd& dv) {
         m_stats.converged = false;
       continue;
     }
-    s.lambda = m_y[m_n + 3 * k];
-    if (s.mode == ContactMode::sticking) s.gamma = m_y.segment<2>(m_n + 3 * k + 1);
+    take_multipliers(m_y, m_n, k, s);
     // Frozen (stats.frozen counts the active ones, as contact_problem.h
     // says). One that kept a mode its own law rejects (pulling, sticking
     // outside the cone, sliding backwards) is not a solution: say so.
@@ -534,7 +535,6 @@ void CrSolver::run(Eigen::VectorXd& dv) {
     if (s.mode == ContactMode::sticking) {
       ++m_stats.sticking;
     } else {
-      s.gamma.setZero();
       ++m_stats.sliding;
     }
     ++m_stats.active;

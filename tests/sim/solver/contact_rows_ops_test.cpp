@@ -8,16 +8,10 @@
 
 #include "sim/solver/contact_rows_ops.h"
 #include "sim/solver/problem_builders.h"
+#include "tests/sim/solver/solver_test_support.h"
 
 namespace recoil::sim {
 namespace {
-
-// Row 0 of contact k as a dense 1 x #DoF matrix.
-Eigen::RowVectorXd dense_normal_row(const ContactRows& rows, int dofs) {
-  Eigen::RowVectorXd out = Eigen::RowVectorXd::Zero(dofs);
-  for (size_t i = 0; i < rows.nodes.size(); ++i) out.segment<3>(3 * rows.nodes[i]) = rows.blocks[i].row(0);
-  return out;
-}
 
 TEST(ContactRowsOps, NormalRowsProductMatchesDenseProduct) {
   std::mt19937 rng(7);
@@ -31,10 +25,11 @@ TEST(ContactRowsOps, NormalRowsProductMatchesDenseProduct) {
   const int dofs = static_cast<int>(problem.b.size());
   Eigen::MatrixXd P = Eigen::MatrixXd::Zero(dofs, dofs);
   for (int i = 0; i < dofs / 3; ++i) P.block<3, 3>(3 * i, 3 * i) = inv_diag[static_cast<size_t>(i)];
+  const Eigen::MatrixXd J = solver_test::dense_normal_rows(problem);
+  const Eigen::MatrixXd coupling = J * P * J.transpose();
   for (size_t a = 0; a < problem.rows.size(); ++a)
     for (size_t b = 0; b < problem.rows.size(); ++b) {
-      const double dense = dense_normal_row(problem.rows[a], dofs) * P *
-                           dense_normal_row(problem.rows[b], dofs).transpose();
+      const double dense = coupling(static_cast<Eigen::Index>(a), static_cast<Eigen::Index>(b));
       EXPECT_NEAR(normal_rows_product(problem.rows[a], problem.rows[b], inv_diag), dense, 1e-12 * (1.0 + std::abs(dense)))
           << a << ", " << b;
     }

@@ -19,6 +19,16 @@ namespace {
 using solver_test::solve_copy;
 using solver_test::tight;
 
+// The FEM cube of fem_problem.h: `resolution` cells a side, Young's modulus
+// in Pa, bottom nodes drifting sideways at `drift` m/s (0: at rest).
+FemBlockParams fem_cube(int resolution, double youngs_modulus, double drift) {
+  FemBlockParams params;
+  params.resolution = resolution;
+  params.youngs_modulus = youngs_modulus;
+  params.drift = drift;
+  return params;
+}
+
 // One contact per node (so the frictional solution is unique), random
 // normals, right-hand sides and mu_s = mu_k.
 OwnedProblem random_friction_problem(std::mt19937& rng) {
@@ -89,9 +99,7 @@ TEST(SolverConvergence, PreconditionerCutsIterations) {
 // sliding on its bottom nodes. The block-Jacobi preconditioner must cut
 // CR's iterations at least 2x against cr_plain (measured: ~4x).
 TEST(SolverConvergence, PreconditionerCutsIterationsOnFemCube) {
-  FemBlockParams params;
-  params.resolution = 5;
-  params.youngs_modulus = 1e6;
+  const FemBlockParams params = fem_cube(5, 1e6, FemBlockParams{}.drift);
   const OwnedProblem owned = fem_block_on_ground(params);
   ContactSolverSettings settings;  // the defaults the World uses
   settings.max_iterations = 50000;
@@ -118,10 +126,7 @@ TEST(SolverConvergence, PreconditionerCutsIterationsOnFemCube) {
 // unconverged, kkt ~1e-4 m/s). Both methods must converge (a few contacts
 // still reach max_flips, in a mode their law accepts).
 TEST(SolverConvergence, StiffRestingFemCubeConverges) {
-  FemBlockParams params;
-  params.resolution = 6;
-  params.youngs_modulus = 1e7;
-  params.drift = 0.0;
+  const FemBlockParams params = fem_cube(6, 1e7, 0.0);
   const OwnedProblem owned = fem_block_on_ground(params);
   for (SolverMethod method : {SolverMethod::cr, SolverMethod::pgs}) {
     ContactSolverSettings settings;
@@ -207,10 +212,7 @@ TEST(SolverConvergence, IterationCapReportsNotConverged) {
 // cap of 95 (mid-way between restarts) was 0.012 m/s worse than a state
 // solved before it.
 TEST(SolverConvergence, CappedSolveNeverReturnsWorseThanASolvedState) {
-  FemBlockParams params;
-  params.resolution = 5;
-  params.youngs_modulus = 1e5;
-  params.drift = 0.0;
+  const FemBlockParams params = fem_cube(5, 1e5, 0.0);
   const OwnedProblem owned = fem_block_on_ground(params);
   ContactSolverSettings settings;
   settings.max_iterations = 100000;

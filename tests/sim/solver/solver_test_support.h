@@ -43,6 +43,17 @@ struct Reference {
   Eigen::VectorXd lambda;
 };
 
+// The normal rows of every contact as one dense #contacts by #DoF matrix.
+inline Eigen::MatrixXd dense_normal_rows(const ContactProblem& problem) {
+  const int m = static_cast<int>(problem.rows.size());
+  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, problem.b.size());
+  for (int k = 0; k < m; ++k) {
+    const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
+    for (size_t i = 0; i < rows.nodes.size(); ++i) J.block<1, 3>(k, 3 * rows.nodes[i]) = rows.blocks[i].row(0);
+  }
+  return J;
+}
+
 // Frictionless reference: tries every active set of the normal rows and
 // returns the one whose equality-constrained solution is feasible with
 // non-negative multipliers (unique for SPD A and independent rows).
@@ -50,13 +61,9 @@ inline std::optional<Reference> brute_force_normal(const ContactProblem& problem
   const Eigen::MatrixXd A = Eigen::MatrixXd(problem.A->to_eigen());
   const int n = static_cast<int>(A.rows());
   const int m = static_cast<int>(problem.rows.size());
-  Eigen::MatrixXd J = Eigen::MatrixXd::Zero(m, n);
+  const Eigen::MatrixXd J = dense_normal_rows(problem);
   Eigen::VectorXd c(m);
-  for (int k = 0; k < m; ++k) {
-    const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
-    for (size_t i = 0; i < rows.nodes.size(); ++i) J.block<1, 3>(k, 3 * rows.nodes[i]) = rows.blocks[i].row(0);
-    c[k] = rows.rhs_normal;
-  }
+  for (int k = 0; k < m; ++k) c[k] = problem.rows[static_cast<size_t>(k)].rhs_normal;
   for (int set = 0; set < (1 << m); ++set) {
     std::vector<int> active;
     for (int k = 0; k < m; ++k)
