@@ -45,7 +45,7 @@ std::vector<ContactCandidate> brute_force_candidates(const std::vector<Collision
         for (int v = 0; v < a.num_vertices(); ++v)
           add(out, test_vertex_plane(a, v, planes[k], static_cast<int>(k), margin));
   }
-  finalize_candidates(out);
+  finalize_candidates(out, surfaces);
   return out;
 }
 

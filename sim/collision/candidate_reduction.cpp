@@ -80,6 +80,50 @@ std::vector<ContactCandidate> one_per_feature(std::vector<ContactCandidate> vert
   return kept;
 }
 
+// Whether triangle point `b` (a candidate's closest point on its triangle)
+// belongs to a triangle containing every vertex of `feature`.
+bool triangle_contains(const SurfacePoint& b, const std::array<int, 3>& feature) {
+  for (int v : feature) {
+    if (v < 0) break;
+    if (std::find(b.vertex.begin(), b.vertex.begin() + b.count, v) == b.vertex.begin() + b.count) return false;
+  }
+  return true;
+}
+
+// Rule 0 (candidate_reduction.h): against a prescribed surface, a candidate
+// whose closest point is an edge or vertex of its triangle is dropped when a
+// triangle sharing that feature is strictly closer to the same vertex (and
+// met no later).
+std::vector<ContactCandidate> drop_points_beyond_a_closer_face(std::vector<ContactCandidate> vertex_triangle,
+                                                               const std::vector<CollisionSurface>& surfaces) {
+  std::sort(vertex_triangle.begin(), vertex_triangle.end(), [](const ContactCandidate& l, const ContactCandidate& r) {
+    return vertex_group(l) < vertex_group(r);
+  });
+  auto dominates = [](const ContactCandidate& closer, const ContactCandidate& c) {
+    return toi_or_never(closer) <= toi_or_never(c) && closer.gap < c.gap - kCloserFaceTolerance;
+  };
+  std::vector<char> keep(vertex_triangle.size(), 1);
+  for (size_t begin = 0; begin < vertex_triangle.size();) {
+    size_t end = begin + 1;
+    while (end < vertex_triangle.size() && vertex_group(vertex_triangle[end]) == vertex_group(vertex_triangle[begin])) ++end;
+    for (size_t i = begin; i < end; ++i) {
+      const ContactCandidate& c = vertex_triangle[i];
+      if (!is_prescribed(surfaces[static_cast<size_t>(c.surface_b)].kind)) break;  // the whole group: one surface B
+      const std::array<int, 3> feature = touched_feature(c.b);
+      if (feature[2] >= 0) continue;  // the triangle's interior: a face's own normal
+      for (size_t j = begin; j < end && keep[i]; ++j)
+        if (j != i && touched_feature(vertex_triangle[j].b) != feature && triangle_contains(vertex_triangle[j].b, feature) &&
+            dominates(vertex_triangle[j], c))
+          keep[i] = 0;
+    }
+    begin = end;
+  }
+  std::vector<ContactCandidate> out;
+  for (size_t i = 0; i < vertex_triangle.size(); ++i)
+    if (keep[i]) out.push_back(std::move(vertex_triangle[i]));
+  return out;
+}
+
 // Rule 2: a pair of vertices found from both sides is kept once. Rule 1 may
 // keep a vertex's candidates in several directions, so each is compared
 // with every kept candidate of its pair.
@@ -118,12 +162,13 @@ std::vector<ContactCandidate> one_per_vertex_pair(std::vector<ContactCandidate> 
 
 }  // namespace
 
-void finalize_candidates(std::vector<ContactCandidate>& candidates) {
+void finalize_candidates(std::vector<ContactCandidate>& candidates, const std::vector<CollisionSurface>& surfaces) {
   std::vector<ContactCandidate> others, vertex_triangle;
   for (ContactCandidate& c : candidates)
     (c.kind == ContactKind::vertex_triangle ? vertex_triangle : others).push_back(std::move(c));
   candidates = std::move(others);
-  for (ContactCandidate& c : one_per_vertex_pair(one_per_feature(std::move(vertex_triangle))))
+  for (ContactCandidate& c :
+       one_per_vertex_pair(one_per_feature(drop_points_beyond_a_closer_face(std::move(vertex_triangle), surfaces))))
     candidates.push_back(std::move(c));
   std::sort(candidates.begin(), candidates.end(), candidate_less);
 }

@@ -12,6 +12,26 @@
 // iteration cap every step; reduced, 16 rows and 150-500 iterations).
 //
 // The rules, applied in this order:
+// - no point beyond a closer face of a prescribed surface: a vertex-
+//   triangle candidate against a kinematic or fixed surface whose closest
+//   point on its triangle is an edge or a vertex of it (the vertex lies
+//   outside the triangle's prism) is dropped when a triangle sharing that
+//   edge or vertex is closer to the same vertex by more than
+//   kCloserFaceTolerance (and met no later). The vertex is then over that
+//   face, which gives the contact; the dropped row's normal p - q runs
+//   along the surface, not across it, and with its weights held for the
+//   step (contact_model.h) it is a wall through a fixed point of the edge,
+//   moving as the surface's script says, whatever impulse it takes. A block
+//   squeezed between counter-rotating faceted rollers had each corner
+//   vertex held by 3-4 of these besides the facet it touched, normals all
+//   round the vertex: the facet edges pushed it along like gear teeth
+//   whatever the friction, a normal impulse grew by 0.1 N s per solve
+//   without bound, and no solve of the block's first steps between the
+//   rollers converged (all do now). Between two dynamic bodies the walls
+//   are kept for now: there they push both bodies and act as extra
+//   friction, and the rigid box stack stands with CR only with them (its
+//   sticking face contacts are redundant, and without the walls CR breaks
+//   them away where pgs holds all 28: 0.29 m of drift in 5 s);
 // - one per vertex and feature: of the vertex-triangle candidates of one
 //   vertex of A against surface B that touch the same feature of B (a
 //   vertex, an edge or a triangle's interior: the vertices with a non-zero
@@ -37,8 +57,15 @@ namespace recoil::sim {
 // Two candidates of one vertex are distinct directions when their normals'
 // cosine is below this (about 26 degrees apart).
 inline constexpr double kDistinctNormalCos = 0.9;
+// How much closer (m) a face must be to rule out a vertex's candidate at an
+// edge or vertex beside it. Far below any real difference: a face closer
+// by less than a tenth of the margin along the surface snaps the closest
+// point onto the shared edge (narrow_phase.h), so the two touch the same
+// feature and rule 1 decides between them.
+inline constexpr double kCloserFaceTolerance = 1e-9;
 
-void finalize_candidates(std::vector<ContactCandidate>& candidates);
+// `surfaces`: the detector's input, which the candidates' surface indices name.
+void finalize_candidates(std::vector<ContactCandidate>& candidates, const std::vector<CollisionSurface>& surfaces);
 
 // For each candidate of `found`, whether one of `known` already describes
 // that contact: the same vertex against the same surface in a similar

@@ -171,7 +171,7 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
         for (int v = 0; v < a.num_vertices(); ++v)
           if (auto c = test_vertex_plane(a, v, planes[k], static_cast<int>(k), margin)) out.push_back(std::move(*c));
   }
-  finalize_candidates(out);
+  finalize_candidates(out, surfaces);
   return out;
 }
 

@@ -2,7 +2,9 @@
 // (parallel edges, coplanar faces, a vertex on an edge, zero-area triangles).
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <iostream>
 
@@ -228,6 +230,58 @@ TEST(CollisionRobustness, RestingVertexKeepsTheOutwardNormalWhicheverWayItMoves)
       }
     EXPECT_EQ(resting, 1) << "dz " << dz;
   }
+}
+
+TEST(CollisionRobustness, VertexOverAFacetIsHeldByThatFacetAlone) {
+  // A faceted roller (32-gon, 5 cm radius) and a vertex 0.5 mm above one of
+  // its facets, 1 mm in from the ridge to the next facet. The neighbouring
+  // triangles in reach (across that ridge and the facet's diagonal) have
+  // their closest points on their shared edges, with normals p - q along the
+  // surface: rows that, with their weights held for the step, wall the
+  // vertex in wherever the roller turns (candidate_reduction.h). Only the
+  // facet under the vertex may hold it, along its face normal.
+  const TriMesh roller = make_cylinder(0.05, 0.2, 32);
+  int facet = -1;  // a side triangle (normal across the axis), away from the caps
+  for (Eigen::Index t = 0; t < roller.triangles.rows() && facet < 0; ++t) {
+    const Eigen::Vector3d a = roller.vertices.row(roller.triangles(t, 0)).transpose();
+    const Eigen::Vector3d b = roller.vertices.row(roller.triangles(t, 1)).transpose();
+    const Eigen::Vector3d c = roller.vertices.row(roller.triangles(t, 2)).transpose();
+    if (std::abs((b - a).cross(c - a).normalized().y()) < 1e-9) facet = static_cast<int>(t);
+  }
+  ASSERT_GE(facet, 0);
+  std::array<Eigen::Vector3d, 3> v;
+  for (int k = 0; k < 3; ++k) v[static_cast<size_t>(k)] = roller.vertices.row(roller.triangles(facet, k)).transpose();
+  const Eigen::Vector3d normal = (v[1] - v[0]).cross(v[2] - v[0]).normalized();
+  ASSERT_GT(normal.dot(Eigen::Vector3d(v[0].x(), 0.0, v[0].z())), 0.0) << "outward (axis along y)";
+  // The triangle's edge that runs along the axis (a ridge), and a point on the
+  // facet 1 mm in from it, half-way along.
+  int ridge = 0;
+  for (int k = 0; k < 3; ++k) {
+    const Eigen::Vector3d e = v[static_cast<size_t>((k + 1) % 3)] - v[static_cast<size_t>(k)];
+    if (std::abs(e.normalized().y()) > 0.999) ridge = k;
+  }
+  const Eigen::Vector3d r0 = v[static_cast<size_t>(ridge)], r1 = v[static_cast<size_t>((ridge + 1) % 3)];
+  const Eigen::Vector3d third = v[static_cast<size_t>((ridge + 2) % 3)];
+  const Eigen::Vector3d axis = (r1 - r0).normalized();
+  Eigen::Vector3d inward = third - r0;
+  inward = (inward - inward.dot(axis) * axis).normalized();
+  const Eigen::Vector3d on_facet = r0 + 0.35 * (r1 - r0) + 0.001 * inward;
+  TriMesh probe = testing::box({0.002, 0.002, 0.002});
+  probe.vertices.rowwise() -= probe.vertices.row(0);
+  const Eigen::Matrix3d turn = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(1, 1, 1), normal).toRotationMatrix();
+  probe.vertices = (probe.vertices * turn.transpose()).rowwise() + (on_facet + 0.0005 * normal).transpose();
+  const auto found = detect_checked({moving_surface(probe, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero()),
+                                     moving_surface(roller, 2, SurfaceKind::kinematic, Eigen::Vector3d::Zero())},
+                                    {}, 0.002);
+  int held = 0;
+  for (const ContactCandidate& c : found)
+    if (c.kind == ContactKind::vertex_triangle && c.surface_a == 0 && c.primitive_a == 0) {
+      ++held;
+      EXPECT_EQ(c.primitive_b, facet);
+      EXPECT_NEAR(c.normal.dot(normal), 1.0, 1e-9);
+      EXPECT_NEAR(c.gap, 0.0005, 1e-9);
+    }
+  EXPECT_EQ(held, 1);
 }
 
 TEST(CollisionRobustness, DegenerateTriangles) {
