@@ -58,26 +58,22 @@ std::array<int, 3> touched_feature(const SurfacePoint& b) {
   return feature;
 }
 
-// Rule 1 (candidate_reduction.h): per (surface A, vertex, surface B, touched
-// feature of B), the strongest candidate and those whose normals point
-// elsewhere.
-std::vector<ContactCandidate> one_per_feature(std::vector<ContactCandidate> vertex_triangle) {
+// Where one vertex's candidates against one surface start and end in a list
+// sorted by vertex_group: [begin, end) of the group starting at `begin`.
+size_t vertex_group_end(const std::vector<ContactCandidate>& sorted, size_t begin) {
+  size_t end = begin + 1;
+  while (end < sorted.size() && vertex_group(sorted[end]) == vertex_group(sorted[begin])) ++end;
+  return end;
+}
+
+// The order both per-vertex rules read: by (surface A, vertex, surface B),
+// then touched feature, then strength.
+void sort_by_vertex_and_feature(std::vector<ContactCandidate>& vertex_triangle) {
   auto group = [](const ContactCandidate& c) { return std::make_tuple(vertex_group(c), touched_feature(c.b)); };
   std::sort(vertex_triangle.begin(), vertex_triangle.end(), [&](const ContactCandidate& l, const ContactCandidate& r) {
     if (group(l) != group(r)) return group(l) < group(r);
     return stronger(l, r);
   });
-  std::vector<ContactCandidate> kept;
-  size_t group_start = 0;  // first kept candidate of the current group
-  for (size_t i = 0; i < vertex_triangle.size(); ++i) {
-    ContactCandidate& c = vertex_triangle[i];
-    if (i == 0 || group(c) != group(vertex_triangle[i - 1])) group_start = kept.size();
-    const bool distinct =
-        std::all_of(kept.begin() + static_cast<std::ptrdiff_t>(group_start), kept.end(),
-                    [&](const ContactCandidate& k) { return k.normal.dot(c.normal) < kDistinctNormalCos; });
-    if (distinct) kept.push_back(std::move(c));
-  }
-  return kept;
 }
 
 // Whether triangle point `b` (a candidate's closest point on its triangle)
@@ -93,35 +89,49 @@ bool triangle_contains(const SurfacePoint& b, const std::array<int, 3>& feature)
 // Rule 0 (candidate_reduction.h): against a prescribed surface, a candidate
 // whose closest point is an edge or vertex of its triangle is dropped when a
 // triangle sharing that feature is strictly closer to the same vertex (and
-// met no later).
-std::vector<ContactCandidate> drop_points_beyond_a_closer_face(std::vector<ContactCandidate> vertex_triangle,
+// met no later). Input sorted by sort_by_vertex_and_feature; the order is kept.
+std::vector<ContactCandidate> drop_points_beyond_a_closer_face(std::vector<ContactCandidate> sorted,
                                                                const std::vector<CollisionSurface>& surfaces) {
-  std::sort(vertex_triangle.begin(), vertex_triangle.end(), [](const ContactCandidate& l, const ContactCandidate& r) {
-    return vertex_group(l) < vertex_group(r);
-  });
   auto dominates = [](const ContactCandidate& closer, const ContactCandidate& c) {
     return toi_or_never(closer) <= toi_or_never(c) && closer.gap < c.gap - kCloserFaceTolerance;
   };
-  std::vector<char> keep(vertex_triangle.size(), 1);
-  for (size_t begin = 0; begin < vertex_triangle.size();) {
-    size_t end = begin + 1;
-    while (end < vertex_triangle.size() && vertex_group(vertex_triangle[end]) == vertex_group(vertex_triangle[begin])) ++end;
+  std::vector<char> keep(sorted.size(), 1);
+  std::vector<std::array<int, 3>> features;  // of the current group
+  for (size_t begin = 0, end = 0; begin < sorted.size(); begin = end) {
+    end = vertex_group_end(sorted, begin);
+    if (!is_prescribed(surfaces[static_cast<size_t>(sorted[begin].surface_b)].kind)) continue;
+    features.clear();
+    for (size_t i = begin; i < end; ++i) features.push_back(touched_feature(sorted[i].b));
     for (size_t i = begin; i < end; ++i) {
-      const ContactCandidate& c = vertex_triangle[i];
-      if (!is_prescribed(surfaces[static_cast<size_t>(c.surface_b)].kind)) break;  // the whole group: one surface B
-      const std::array<int, 3> feature = touched_feature(c.b);
+      const std::array<int, 3>& feature = features[i - begin];
       if (feature[2] >= 0) continue;  // the triangle's interior: a face's own normal
       for (size_t j = begin; j < end && keep[i]; ++j)
-        if (j != i && touched_feature(vertex_triangle[j].b) != feature && triangle_contains(vertex_triangle[j].b, feature) &&
-            dominates(vertex_triangle[j], c))
+        if (features[j - begin] != feature && triangle_contains(sorted[j].b, feature) && dominates(sorted[j], sorted[i]))
           keep[i] = 0;
     }
-    begin = end;
   }
   std::vector<ContactCandidate> out;
-  for (size_t i = 0; i < vertex_triangle.size(); ++i)
-    if (keep[i]) out.push_back(std::move(vertex_triangle[i]));
+  for (size_t i = 0; i < sorted.size(); ++i)
+    if (keep[i]) out.push_back(std::move(sorted[i]));
   return out;
+}
+
+// Rule 1 (candidate_reduction.h): per (surface A, vertex, surface B, touched
+// feature of B), the strongest candidate and those whose normals point
+// elsewhere. Input sorted by sort_by_vertex_and_feature.
+std::vector<ContactCandidate> one_per_feature(std::vector<ContactCandidate> sorted) {
+  auto group = [](const ContactCandidate& c) { return std::make_tuple(vertex_group(c), touched_feature(c.b)); };
+  std::vector<ContactCandidate> kept;
+  size_t group_start = 0;  // first kept candidate of the current group
+  for (size_t i = 0; i < sorted.size(); ++i) {
+    ContactCandidate& c = sorted[i];
+    if (i == 0 || group(c) != group(sorted[i - 1])) group_start = kept.size();
+    const bool distinct =
+        std::all_of(kept.begin() + static_cast<std::ptrdiff_t>(group_start), kept.end(),
+                    [&](const ContactCandidate& k) { return k.normal.dot(c.normal) < kDistinctNormalCos; });
+    if (distinct) kept.push_back(std::move(c));
+  }
+  return kept;
 }
 
 // Rule 2: a pair of vertices found from both sides is kept once. Rule 1 may
@@ -167,6 +177,7 @@ void finalize_candidates(std::vector<ContactCandidate>& candidates, const std::v
   for (ContactCandidate& c : candidates)
     (c.kind == ContactKind::vertex_triangle ? vertex_triangle : others).push_back(std::move(c));
   candidates = std::move(others);
+  sort_by_vertex_and_feature(vertex_triangle);
   for (ContactCandidate& c :
        one_per_vertex_pair(one_per_feature(drop_points_beyond_a_closer_face(std::move(vertex_triangle), surfaces))))
     candidates.push_back(std::move(c));

@@ -255,11 +255,12 @@ TEST(CollisionRobustness, VertexOverAFacetIsHeldByThatFacetAlone) {
   ASSERT_GT(normal.dot(Eigen::Vector3d(v[0].x(), 0.0, v[0].z())), 0.0) << "outward (axis along y)";
   // The triangle's edge that runs along the axis (a ridge), and a point on the
   // facet 1 mm in from it, half-way along.
-  int ridge = 0;
+  int ridge = -1;
   for (int k = 0; k < 3; ++k) {
     const Eigen::Vector3d e = v[static_cast<size_t>((k + 1) % 3)] - v[static_cast<size_t>(k)];
     if (std::abs(e.normalized().y()) > 0.999) ridge = k;
   }
+  ASSERT_GE(ridge, 0) << "a side triangle has an edge along the axis";
   const Eigen::Vector3d r0 = v[static_cast<size_t>(ridge)], r1 = v[static_cast<size_t>((ridge + 1) % 3)];
   const Eigen::Vector3d third = v[static_cast<size_t>((ridge + 2) % 3)];
   const Eigen::Vector3d axis = (r1 - r0).normalized();
