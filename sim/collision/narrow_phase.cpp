@@ -103,6 +103,21 @@ double edge_bend(const PreparedSurface& s, int edge) {
   return std::max(std::abs(n1.normalized().dot(o2 - p)), std::abs(n2.normalized().dot(o1 - p)));
 }
 
+// Whether direction d (unit) leaves the surface across `edge` into its
+// inside: below both its triangles' planes (counter-clockwise from outside),
+// each by more than kInsideCosine. Needs a closed surface's edge.
+constexpr double kInsideCosine = 0.1;
+bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vector3d& d) {
+  const std::array<int, 2> ends = s.edges[static_cast<size_t>(edge)];
+  const std::array<int, 2> opposite = s.edge_opposite[static_cast<size_t>(edge)];
+  const Points& x = s.surface->x0;
+  const Eigen::Vector3d lo = row(x, ends[0]), hi = row(x, ends[1]);
+  const Eigen::Vector3d n_forward = face_normal(lo, hi, row(x, opposite[0]));  // triangle (lo, hi, o0)
+  const Eigen::Vector3d n_back = face_normal(hi, lo, row(x, opposite[1]));     // triangle (hi, lo, o1)
+  if (n_forward.isZero() || n_back.isZero()) return false;
+  return d.dot(n_forward.normalized()) < -kInsideCosine && d.dot(n_back.normalized()) < -kInsideCosine;
+}
+
 }  // namespace
 
 std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles) {
@@ -128,11 +143,14 @@ std::vector<std::array<int, 2>> edge_opposites(const Triangles& triangles, const
       const auto it = std::lower_bound(edges.begin(), edges.end(), key);
       if (it == edges.end() || *it != key) continue;
       const size_t e = static_cast<size_t>(it - edges.begin());
-      if (count[e] < 2) opposite[e][static_cast<size_t>(count[e])] = triangles(f, (k + 2) % 3);
+      // Slot 0: the triangle that runs the edge lo -> hi; slot 1: hi -> lo.
+      const size_t slot = u < v ? 0 : 1;
+      if (opposite[e][slot] < 0) opposite[e][slot] = triangles(f, (k + 2) % 3);
+      else opposite[e][slot] = -2;  // a second triangle the same way round
       ++count[e];
     }
   for (size_t e = 0; e < edges.size(); ++e)
-    if (count[e] != 2) opposite[e] = {-1, -1};
+    if (count[e] != 2 || opposite[e][0] < 0 || opposite[e][1] < 0) opposite[e] = {-1, -1};
   return opposite;
 }
 
@@ -170,6 +188,8 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   for (size_t e = 0; e < out.edges.size(); ++e)
     out.edge_motion[e] = std::max(out.vertex_motion[out.edges[e][0]], out.vertex_motion[out.edges[e][1]]);
   out.edge_opposite = edge_opposite ? *edge_opposite : edge_opposites(surface.triangles, out.edges);
+  out.closed = !out.edges.empty() && std::all_of(out.edge_opposite.begin(), out.edge_opposite.end(),
+                                                 [](const std::array<int, 2>& o) { return o[0] >= 0; });
   return out;
 }
 
@@ -332,6 +352,15 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const Eigen::Vector3d rel = (c.a.evaluate(sa.x1) - c.b.evaluate(sb.x1)) - sep0;
   const bool touching = toi.has_value() || sep0.norm() <= tol;
   c.normal = choose_normal(touching, sep0, feature, /*outward=*/false, rel, tol);
+  // p - q into B at its edge and q - p into A at its: the edges crossed
+  // while no candidate held them (a ridge through a flat face grid), and
+  // p - q would hold them crossed. Turned round, the gap is negative and the
+  // solver pushes the edges back out. Only between two closed surfaces,
+  // where inside means something; not in self-contact, where two edges on
+  // either side of a ridge pass this test without having crossed.
+  if (!toi && a.index != b.index && a.closed && b.closed &&
+      points_inside_at_edge(b, edge_b, c.normal) && points_inside_at_edge(a, edge_a, -c.normal))
+    c.normal = -c.normal;
   c.gap = c.normal.dot(sep0);
   return c;
 }

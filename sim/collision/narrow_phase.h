@@ -50,8 +50,14 @@
 // impact, turned towards the side p started on. When they already touch at
 // the start, that side is unknown: a face normal keeps its outward sign
 // (counter-clockwise triangles; A is assumed outside B), an edge cross product
-// is turned against the relative motion. Degenerate features fall back to
-// the direction of p - q, then the reversed relative motion, finally +z.
+// is turned against the relative motion. Between two different closed
+// surfaces, an edge-edge p - q that leaves B's edge below both its
+// triangles' planes while q - p leaves A's edge below both of its says the
+// edges have already crossed (a ridge slipped through a flat face grid,
+// which has no edge candidates, between two vertices): the normal is turned
+// round, out of B, and the gap is the negative depth. Degenerate features
+// fall back to the direction of p - q, then the reversed relative motion,
+// finally +z.
 // Touching at the start is ambiguous where the closest point is a triangle's
 // edge or vertex (a corner resting exactly on a corner touches the top face
 // and the side faces alike): there a triangle gives a candidate only if the
@@ -73,8 +79,10 @@ struct PreparedSurface {
   std::vector<double> triangle_motion;        // #F, max over its vertices
   std::vector<std::array<int, 2>> edges;      // #E, (lo, hi), sorted, unique
   std::vector<double> edge_motion;            // #E
-  std::vector<std::array<int, 2>> edge_opposite;  // #E: third vertices of the edge's two triangles
-                                                  // (-1, -1 on a boundary or non-manifold edge)
+  std::vector<std::array<int, 2>> edge_opposite;  // #E: third vertices of the edge's two triangles, the one
+                                                  // running lo -> hi first (-1, -1 on a boundary,
+                                                  // non-manifold or inconsistently wound edge)
+  bool closed = false;                        // every edge has both triangles, wound consistently
   double max_motion = 0.0;                    // over all vertices
   double length_scale = 0.0;                  // largest |coordinate|, for tolerances
   Aabb box0;                                  // bounding box of x0
@@ -96,7 +104,9 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
 std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles);
 
 // For each of `edges` (unique_edges(triangles)), the third vertices of its
-// two triangles; (-1, -1) unless exactly two triangles share it.
+// two triangles: first of the triangle that runs the edge from its lower to
+// its higher vertex, then of the one running it back; (-1, -1) unless
+// exactly two triangles share it, one each way round.
 std::vector<std::array<int, 2>> edge_opposites(const Triangles& triangles, const std::vector<std::array<int, 2>>& edges);
 
 // False when no pair of primitives of a and b can satisfy the candidate rule:

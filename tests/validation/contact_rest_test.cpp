@@ -220,24 +220,14 @@ TEST(ContactValidation, DISABLED_BunnyPileStaysWithinMargin) {
   EXPECT_EQ(inverted, 0);
 }
 
-// Disabled (issue #5): the block inverts at step 108 with cr and at step
-// 103 with pgs, its lower corners carried round under the rollers
-// (element centroids 1.1-1.3 cm off a roller's surface below its axis).
-// pgs inverts it too with a stable Neo-Hookean block (step 118), a 4-cell
-// lattice (106), a 7 cm gap (89), E 300 kPa (107) or rollers at half speed
-// (186), each time as the block's centre reaches y = -0.05 m and its top
-// face leaves the rollers: the scene needs changing before this can judge
-// cr. The block's first steps between the rollers converge with cr as with
-// pgs (steps 10-30: 1 of 21 unconverged each; cr had 8 before the walls at
-// facet edges of prescribed surfaces left the candidates,
-// candidate_reduction.h); from step 32 both fail on about half the steps
-// (17 and 18 of steps 10-49), with edge-edge pairs between the block's
-// bent face-grid lines and the rollers' ridges, some held on the wrong
-// side. Session 6 took the crossings of flat edges out of the candidates
-// (the cylinders' side quads, the block's face grid): cr's first contact
-// steps fell from 607 to 280 iterations and pgs's from 183 to 27
-// (`recoil_bench contact`).
-TEST(ContactValidation, DISABLED_RollersPassTheBlockThrough) {
+// The 8 cm block must be squeezed 2 cm narrower through the gap and is
+// drawn in by friction alone (the roller's nip angle, 37 degrees, needs
+// mu >= 0.75). Until edge-edge pairs that had already crossed counted as
+// penetrating (narrow_phase.h), the rollers' ridges slipped through the
+// block's flat face grid, were then held inside it, and the block's lower
+// corners inverted as they were carried round under the rollers (step 108
+// with cr, 103 with pgs).
+TEST(ContactValidation, RollersPassTheBlockThrough) {
   const double dt = 0.005;
   World world(rollers(6.0, 3, dt));
   double penetration = 0.0;

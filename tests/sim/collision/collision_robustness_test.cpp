@@ -285,6 +285,68 @@ TEST(CollisionRobustness, VertexOverAFacetIsHeldByThatFacetAlone) {
   EXPECT_EQ(held, 1);
 }
 
+// A tetrahedron whose edge (vertices 0, 1) crosses the box's top-front ridge
+// (y = z = 5 cm, along x) at right angles, its middle `depth` metres inside
+// the box along the ridge's outward bisector (negative: outside); the other
+// two vertices stand 5 mm out from the box. Counter-clockwise from outside.
+TriMesh tetrahedron_across_the_ridge(double depth) {
+  const Eigen::Vector3d out = Eigen::Vector3d(0, 1, 1).normalized(), along = Eigen::Vector3d(0, 1, -1).normalized();
+  const Eigen::Vector3d middle = Eigen::Vector3d(0, 0.05, 0.05) - depth * out;
+  TriMesh tet;
+  tet.vertices.resize(4, 3);
+  tet.vertices.row(0) = (middle + 0.005 * along).transpose();
+  tet.vertices.row(1) = (middle - 0.005 * along).transpose();
+  tet.vertices.row(2) = (middle + 0.005 * out + Eigen::Vector3d(0.003, 0, 0)).transpose();
+  tet.vertices.row(3) = (middle + 0.005 * out - Eigen::Vector3d(0.003, 0, 0)).transpose();
+  tet.triangles.resize(4, 3);
+  tet.triangles << 0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2;
+  const Eigen::Vector3d centre = tet.vertices.colwise().mean().transpose();
+  for (Eigen::Index f = 0; f < 4; ++f) {  // turn each face outwards
+    const Eigen::Vector3d a = tet.vertices.row(tet.triangles(f, 0)).transpose();
+    const Eigen::Vector3d b = tet.vertices.row(tet.triangles(f, 1)).transpose();
+    const Eigen::Vector3d c = tet.vertices.row(tet.triangles(f, 2)).transpose();
+    if ((b - a).cross(c - a).dot(a - centre) < 0.0) std::swap(tet.triangles(f, 1), tet.triangles(f, 2));
+  }
+  return tet;
+}
+
+TEST(CollisionRobustness, EdgeAlreadyThroughARidgeCountsAsPenetrating) {
+  // A ridge that slipped through a body's face between two of its vertices
+  // (while the face was flat, so no edge pair held it) lies inside that
+  // body once the face bends round it. Its normal p - q would then hold the
+  // edges crossed, with a positive gap; it must point out of the box instead,
+  // with the depth as a negative gap, so that the solver pushes the edge out.
+  // The same edge as far outside keeps p - q. Also between two closed
+  // deformable bodies, and whichever body is side A.
+  const double depth = 0.0002;
+  for (SurfaceKind box_kind : {SurfaceKind::static_body, SurfaceKind::deformable})
+    for (double sign : {1.0, -1.0}) {
+      const CollisionSurface tet = moving_surface(tetrahedron_across_the_ridge(sign * depth), 1,
+                                                  SurfaceKind::deformable, Eigen::Vector3d::Zero());
+      const CollisionSurface box = moving_surface(testing::box({0.05, 0.05, 0.05}), 2, box_kind, Eigen::Vector3d::Zero());
+      const auto found = detect_checked({tet, box}, {}, 0.002);
+      int crossings = 0;
+      for (const ContactCandidate& c : found) {
+        if (c.kind != ContactKind::edge_edge) continue;
+        ++crossings;
+        const bool tet_is_a = c.surface_a == 0;
+        const std::array<int, 2> tet_edge = tet_is_a ? std::array<int, 2>{c.a.vertex[0], c.a.vertex[1]}
+                                                     : std::array<int, 2>{c.b.vertex[0], c.b.vertex[1]};
+        const std::array<int, 2> ridge = tet_is_a ? std::array<int, 2>{c.b.vertex[0], c.b.vertex[1]}
+                                                  : std::array<int, 2>{c.a.vertex[0], c.a.vertex[1]};
+        EXPECT_EQ(std::min(tet_edge[0], tet_edge[1]), 0);
+        EXPECT_EQ(std::max(tet_edge[0], tet_edge[1]), 1);
+        EXPECT_EQ(std::min(ridge[0], ridge[1]), 6);
+        EXPECT_EQ(std::max(ridge[0], ridge[1]), 7);
+        // From the box to the tetrahedron: out of the box across its ridge.
+        const Eigen::Vector3d out_of_box = Eigen::Vector3d(0, 1, 1).normalized() * (tet_is_a ? 1.0 : -1.0);
+        EXPECT_NEAR(c.normal.dot(out_of_box), 1.0, 1e-9) << "depth " << sign * depth;
+        EXPECT_NEAR(c.gap, -sign * depth, 1e-9);
+      }
+      EXPECT_EQ(crossings, 1) << "depth " << sign * depth;
+    }
+}
+
 TEST(CollisionRobustness, DegenerateTriangles) {
   // A surface with a zero-area triangle (collinear) and one with a repeated
   // vertex, next to a moving small box.
