@@ -223,11 +223,13 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const TriangleClosestPoint closest = closest_point_on_triangle(p0, t0[0], t0[1], t0[2]);
   const double distance = (p0 - closest.point).norm();
   const double motion = a.vertex_motion[vertex] + b.triangle_motion[triangle];
-  if (!(distance <= margin + motion)) return std::nullopt;
+  double relative = 0.0;  // narrow_phase.h: how far p moves with respect to any point of the triangle
+  for (int k = 0; k < 3; ++k) relative = std::max(relative, ((p1 - p0) - (t1[k] - t0[k])).norm());
+  if (!(distance <= margin + relative)) return std::nullopt;
   // The same bound from the end of the step (narrow_phase.h).
-  if (motion > 0.0) {
+  if (relative > 0.0) {
     const Eigen::Vector3d end = closest_point_on_triangle(p1, t1[0], t1[1], t1[2]).point;
-    if (!((p1 - end).norm() <= margin + motion)) return std::nullopt;
+    if (!((p1 - end).norm() <= margin + relative)) return std::nullopt;
   }
 
   const double tol = pair_tolerance(a, b);
@@ -297,7 +299,7 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   SegmentClosestPoints closest = closest_points_on_segments(a0, a1, b0, b1);
   const double distance = ((a0 + closest.s * (a1 - a0)) - (b0 + closest.t * (b1 - b0))).norm();
   const double motion = a.edge_motion[edge_a] + b.edge_motion[edge_b];
-  if (!(distance <= margin + motion)) return std::nullopt;
+  if (!(distance <= margin + motion)) return std::nullopt;  // cheap: |relative| <= motion
   // A flat edge adds nothing its neighbours do not (narrow_phase.h).
   const double flat = kFeatureSnapShare * margin;
   if (edge_bend(a, edge_a) <= flat || edge_bend(b, edge_b) <= flat) return std::nullopt;
@@ -305,9 +307,14 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const double tol = pair_tolerance(a, b);
   const Eigen::Vector3d a0e = row(sa.x1, ea[0]), a1e = row(sa.x1, ea[1]);
   const Eigen::Vector3d b0e = row(sb.x1, eb[0]), b1e = row(sb.x1, eb[1]);
-  if (motion > 0.0) {  // the same bound from the end of the step
+  double relative = 0.0;  // narrow_phase.h: how far any point of one edge moves with respect to any of the other
+  for (const Eigen::Vector3d& da_i : {Eigen::Vector3d(a0e - a0), Eigen::Vector3d(a1e - a1)})
+    for (const Eigen::Vector3d& db_j : {Eigen::Vector3d(b0e - b0), Eigen::Vector3d(b1e - b1)})
+      relative = std::max(relative, (da_i - db_j).norm());
+  if (!(distance <= margin + relative)) return std::nullopt;
+  if (relative > 0.0) {  // the same bound from the end of the step
     const SegmentClosestPoints end = closest_points_on_segments(a0e, a1e, b0e, b1e);
-    if (!(((a0e + end.s * (a1e - a0e)) - (b0e + end.t * (b1e - b0e))).norm() <= margin + motion)) return std::nullopt;
+    if (!(((a0e + end.s * (a1e - a0e)) - (b0e + end.t * (b1e - b0e))).norm() <= margin + relative)) return std::nullopt;
   }
   std::optional<double> toi;
   if (motion > 0.0) toi = edge_edge_toi(a0, a0e, a1, a1e, b0, b0e, b1, b1e, tol + 1e-12 * motion);

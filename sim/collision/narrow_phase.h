@@ -3,15 +3,20 @@
 // Embree detector and the brute-force oracle so that both define the same
 // candidate set; they differ only in which pairs they offer to these tests.
 //
-// The candidate rule (all distances at the start of the step, x0; d(.) is how
-// far a vertex moves over the step, |x1 - x0|, maxed over a primitive's vertices):
+// The candidate rule (all distances at the start of the step, x0; r is how
+// far the pair's primitives move with respect to each other over the step:
+// the largest |(x1 - x0)_i - (x1 - x0)_j| over a vertex i of one and j of the
+// other):
 // - vertex v (surface A) / triangle t (surface B):
-//     dist(v, t) <= margin + d(v) + d(t) at x0, and the same at x1,
+//     dist(v, t) <= margin + r at x0, and the same at x1,
 //   necessary conditions for the pair to come within the margin at some time
-//   during the step (linear motion): the distance changes by at most
-//   s (d(v) + d(t)) over a fraction s of the step. Pairs that do meet
-//   (continuous check) always pass.
-// - edge e (A) / edge f (B): dist(e, f) <= margin + d(e) + d(f) at x0 and x1, the
+//   during the step (linear motion): any point of t is a fixed blend of its
+//   vertices, so v moves by at most r with respect to it, and the distance
+//   changes by at most s r over a fraction s of the step. Bodies falling
+//   together (a pile before it lands) therefore give no candidates until they
+//   meet; the broad phase bounds r by |x1 - x0|(v) + |x1 - x0|(t). Pairs that
+//   do meet (continuous check) always pass.
+// - edge e (A) / edge f (B): dist(e, f) <= margin + r at x0 and x1, the
 //   closest points (at the impact, if the continuous check found one) lie
 //   more than margin/10 from both edges' ends, and the edges are not
 //   parallel to within the margin (sine of their angle times the longer

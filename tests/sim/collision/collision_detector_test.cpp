@@ -95,8 +95,8 @@ TEST(CollisionDetector, MatchesBruteForceOnRandomScenes) {
   }
   // The scenes really exercise every kind of pair.
   std::cout << "self-contact candidates over all scenes: " << self_total << "\n";
-  EXPECT_GT(totals[0], 500);
-  EXPECT_GT(totals[1], 500);
+  EXPECT_GT(totals[0], 400);
+  EXPECT_GT(totals[1], 400);
   EXPECT_GT(totals[2], 20);
   EXPECT_GT(self_total, 20);
 }
@@ -123,7 +123,7 @@ TEST(CollisionDetector, SameOutputRunAfterRunAndAtAnyThreadCount) {
   const RandomScene scene = random_scene(9);
   CollisionDetector one({0.006, 1});
   const auto reference = one.detect(scene.surfaces, scene.planes);
-  ASSERT_GT(reference.size(), 100u);
+  ASSERT_GT(reference.size(), 80u);
   testing::expect_same_candidates(one.detect(scene.surfaces, scene.planes), reference, 0.0);
   for (int threads : {2, 3, 8}) {
     CollisionDetector many({0.006, threads});
@@ -152,6 +152,34 @@ TEST(CollisionDetector, FarApartSurfacesAreCulledUnlessTheyMoveThrough) {
   const auto with_toi = std::count_if(found.begin(), found.end(), [](const auto& c) { return c.toi.has_value(); });
   std::cout << found.size() << " candidates for a sphere flying through another, " << with_toi << " with toi\n";
   EXPECT_GT(with_toi, 20);
+}
+
+TEST(CollisionDetector, BodiesFallingTogetherGiveNoCandidatesUntilTheyClose) {
+  // Two spheres 1 cm apart, one above the other, both falling 3 cm in the
+  // step (a pile before its bottom lands): each moves 6 cm in all with
+  // respect to the other's points only if their motions are added, so
+  // the bound is on their relative motion (narrow_phase.h) and nothing is a
+  // candidate. With the lower one held still, the upper one closes the gap
+  // within the step, and its lower vertices are.
+  TriMesh lower = icosphere(2), upper = icosphere(2);
+  lower.vertices *= 0.05;
+  upper.vertices *= 0.05;
+  upper.vertices.col(2).array() += 0.11;
+  const Eigen::Vector3d fall(0.0, 0.0, -0.03);
+  CollisionDetector detector({0.002, 1});
+  const std::vector<CollisionSurface> together = {moving_surface(lower, 1, SurfaceKind::deformable, fall),
+                                                  moving_surface(upper, 2, SurfaceKind::deformable, fall)};
+  const auto apart = detector.detect(together, {});
+  testing::expect_same_candidates(apart, brute_force_candidates(together, {}, {0.002, 1}), 1e-9);
+  EXPECT_TRUE(apart.empty()) << apart.size() << " candidates";
+  const std::vector<CollisionSurface> closing = {
+      moving_surface(lower, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero()),
+      moving_surface(upper, 2, SurfaceKind::deformable, fall)};
+  const auto found = detector.detect(closing, {});
+  testing::expect_same_candidates(found, brute_force_candidates(closing, {}, {0.002, 1}), 1e-9);
+  EXPECT_GT(found.size(), 0u);
+  for (const ContactCandidate& c : found)  // from side B to side A: up when the upper sphere is A
+    EXPECT_GT(c.normal.z() * (c.surface_a == 1 ? 1.0 : -1.0), 0.0);
 }
 
 TEST(CollisionDetector, SelfContactSkipsNeighbours) {
