@@ -125,9 +125,12 @@ inline WorldDesc jelly_stack(int count = 3, double size = 0.1, int resolution = 
   return w;
 }
 
-// Eight deformable bunnies (about `height` tall) dropped on top of each other.
-inline WorldDesc bunny_pile(const std::string& bunny_path, int count = 8, double height = 0.12, int resolution = 4,
-                            double dt = 0.005) {
+// Deformable bunnies (about `height` tall), jelly, no self-contact, each
+// turned 45 degrees about y from the last; `place(i, height)` gives the
+// centre of bunny i.
+template <typename Place>
+WorldDesc bunnies_dropped(const std::string& bunny_path, int count, double height, int resolution, double dt,
+                          Place place) {
   WorldDesc w = base_world(dt);
   w.planes.push_back(ground(friction(0.5, 0.5)));
   TriMesh bunny = import_surface(bunny_path);
@@ -141,12 +144,38 @@ inline WorldDesc bunny_pile(const std::string& bunny_path, int count = 8, double
     b.resolution = resolution;
     b.material = jelly(5e4);
     b.self_contact = false;
-    const double x = 0.03 * ((i % 2) ? 1.0 : -1.0), z = 0.03 * ((i / 2 % 2) ? 1.0 : -1.0);
-    b.transform.position = Eigen::Vector3d(x, 0.5 * height + 0.01 + i * (height + 0.01), z);
+    b.transform.position = place(i, height);
     b.transform.rotation = Eigen::Vector3d(0.0, 45.0 * i, 0.0);
     w.bodies.push_back(std::move(b));
   }
   return w;
+}
+
+// Bunnies in one column, 1 cm apart, alternating round the axis 3 cm off it:
+// each lands on the pile below at up to 4 m/s (the eighth falls 0.9 m).
+inline WorldDesc bunny_pile(const std::string& bunny_path, int count = 8, double height = 0.12, int resolution = 4,
+                            double dt = 0.005) {
+  return bunnies_dropped(bunny_path, count, height, resolution, dt, [](int i, double h) {
+    const double x = 0.03 * ((i % 2) ? 1.0 : -1.0), z = 0.03 * ((i / 2 % 2) ? 1.0 : -1.0);
+    return Eigen::Vector3d(x, 0.5 * h + 0.01 + i * (h + 0.01), z);
+  });
+}
+
+// Eight bunnies in two layers of four, as assets/scenes/validation/pile.json:
+// a 2 x 2 grid `spacing` between centres, the upper layer 1.5 heights up and
+// shifted (3, -2) cm, so that each upper bunny falls about half a height onto
+// the one below it, off-centre. With h = 0.12, resolution 3: they land at
+// 0.13-0.15 s and slide off it into the middle and round the outside,
+// reaching the ground by 0.45 s.
+inline WorldDesc bunny_layers(const std::string& bunny_path, double height = 0.12, int resolution = 4,
+                              double dt = 0.005) {
+  return bunnies_dropped(bunny_path, 8, height, resolution, dt, [](int i, double h) {
+    const int layer = i / 4, j = i % 4;
+    const double half_spacing = 0.75 * h;
+    const double x = ((j % 2) ? half_spacing : -half_spacing) + (layer ? 0.03 : 0.0);
+    const double z = ((j / 2) ? half_spacing : -half_spacing) + (layer ? -0.02 : 0.0);
+    return Eigen::Vector3d(x, 0.5 * h + 0.01 + layer * 1.5 * h, z);
+  });
 }
 
 // A soft block pushed down between two kinematic cylinders (axes along z)
