@@ -19,9 +19,21 @@ void reset_lambda_window(ContactTrack& track, double lambda_kinetic) {
   track.alpha = kAlphaTheta;
   track.last_turn = 0;
   track.streak = 0;
+  track.turned_slip.setZero();
+  track.turned_u.setZero();
 }
 
 namespace {
+
+// Angle (rad) from unit vector a to unit vector b, counter-clockwise positive.
+double signed_angle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
+}
+
+Eigen::Vector2d rotated(const Eigen::Vector2d& v, double angle) {
+  const double c = std::cos(angle), s = std::sin(angle);
+  return Eigen::Vector2d(c * v.x() - s * v.y(), s * v.x() + c * v.y());
+}
 
 double push_lambda(ContactTrack& track, double lambda) {
   if (track.samples < kLambdaWindow) {
@@ -141,11 +153,30 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
         // converges by the factor w_t mu lambda' / |u| per solve (0.37 for
         // the particle of slip_direction_test). Coupled contacts still
         // converge only linearly (the lattice of convergence_test: ~25
-        // solves for a warm start 0.1 rad off; a secant step per contact
-        // made that 23 but broke convergence elsewhere).
+        // solves for a warm start 0.1 rad off), hence the secant below.
         const Eigen::Vector2d target = u + w_t * rows.mu_kinetic * s.lambda_kinetic * s.slip;
         aim = target.norm() > 0.0 ? Eigen::Vector2d(target.normalized()) : u_hat;
-        const Eigen::Vector2d moved = s.slip + p.track.alpha * (aim - s.slip);
+        Eigen::Vector2d moved = s.slip + p.track.alpha * (aim - s.slip);
+        // Coupled to sticking neighbours, a contact's u turns with its own
+        // slip, and the aim converges only linearly (rollers: the error
+        // shrank by 0.74 per solve, 20 solves after each re-linearisation).
+        // Where this turn and the last show such a contraction on a small
+        // error, the secant on F(theta) = angle(u) - angle(slip) steps to
+        // its root instead (header: the bounds, and what it was measured on).
+        if (p.track.turned_slip.squaredNorm() > 0.0) {
+          const double error_now = signed_angle(s.slip, u_hat);
+          const double error_before = signed_angle(p.track.turned_slip, p.track.turned_u);
+          const double turned = signed_angle(p.track.turned_slip, s.slip);
+          const double ratio = error_now / error_before;
+          if (std::abs(error_now) < kSecantRange && std::abs(turned) > kEpsTheta && ratio > 0.0 &&
+              ratio < kSecantContraction) {
+            const double reach = kSecantReach * std::abs(error_now);
+            const double step = std::clamp(-error_now * turned / (error_now - error_before), -reach, reach);
+            if (step * error_now > 0.0) moved = rotated(s.slip, step);
+          }
+        }
+        p.track.turned_slip = s.slip;
+        p.track.turned_u = u_hat;
         if (moved.norm() > 0.0) p.state.slip = moved.normalized();
       }
     }

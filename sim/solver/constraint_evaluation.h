@@ -30,6 +30,21 @@
 //   epsilon_2 toward the whole way, so a decayed gain cannot hide a wrong
 //   direction either (the .cpp says why). A rejected proposal leaves the
 //   contact's state and track as they were;
+// - the aim's fixed point is the slip's own only for an isolated contact;
+//   beside sticking neighbours it is reached linearly (rollers, resolution
+//   3, step 27: the KKT residual fell by 0.74 per solve, 20 solves after
+//   each re-linearisation). Where the direction error is below kSecantRange
+//   and shrank since the contact's last turn by at least kSecantContraction,
+//   the turn is a secant step on F(theta) = angle(u) - angle(slip) from
+//   those two turns instead, toward u and at most kSecantReach times the
+//   error. Its effect is chaotic per scene, but over the rollers at omega
+//   5, 6, 7 and resolutions 3, 4, 5 (150 steps each), with the solve's
+//   stop at KKT <= epsilon_2 (cr_solver.cpp), 470 capped steps against 538
+//   and no worst KKT above 0.6 m/s (four runs above 1 before, up to 18),
+//   and resolution 5 no longer carries the block up round a roller. The
+//   secant alone (without that stop) inverted the block at resolutions 3
+//   and 5. An earlier secant, unbounded, made the lattice of
+//   convergence_test 23 solves instead of 25 but broke convergence elsewhere;
 // - sticking <-> sliding changes, like Algorithm 3, are made only at
 //   converged evaluations: decided on the half-converged gamma and u of
 //   mid-solve evaluations they cycled on stiff resting bodies (boundary
@@ -55,6 +70,9 @@ inline constexpr int kAlphaStreak = 4;
 inline constexpr double kChangeShare = 0.9;
 inline constexpr double kParallel = 0.9;  // cosine above which two normal rows count as one (see below)
 inline constexpr double kRegisteredChange = 2.0;  // in epsilon_2: the smallest friction step taken
+inline constexpr double kSecantContraction = 0.95;  // the direction error must shrink at least this much per turn
+inline constexpr double kSecantReach = 8.0;         // a secant turn is at most this many times the error
+inline constexpr double kSecantRange = 0.1;         // rad: the secant only for direction errors below this
 
 // Solver-side bookkeeping of one contact, beside its ContactState.
 struct ContactTrack {
@@ -66,6 +84,8 @@ struct ContactTrack {
   double alpha = kAlphaTheta;                   // direction gain, halved at each overshoot
   int last_turn = 0;                            // sign of the last direction turn (+1 counter-clockwise)
   int streak = 0;                               // accepted turns the same way since alpha last changed
+  // The slip direction and the direction of u at the last accepted turn (zero: none yet), for the secant.
+  Eigen::Vector2d turned_slip = Eigen::Vector2d::Zero(), turned_u = Eigen::Vector2d::Zero();
 };
 
 // Starts the moving average of a sliding contact at `lambda_kinetic`, and
