@@ -197,8 +197,8 @@ TEST(ContactValidation, DeterministicAcrossRuns) {
   EXPECT_EQ(hashes[0], hashes[1]);
 }
 
-// Eight bunnies in two layers of four, as the shipped validation scene
-// (assets/scenes/validation/pile.json). A single column of eight (the
+// Eight bunnies in two layers of four, laid out as the shipped validation
+// scene (assets/scenes/validation/pile.json). A single column of eight (the
 // contact bench's bunny_pile, each landing at up to 4 m/s) still breaks with
 // cr at step 78: KKT residuals of 0.03-120 m/s from step 75, then 11 mm of
 // penetration and inverted elements (issue #5).
@@ -229,10 +229,10 @@ TEST(ContactValidation, BunnyPileStaysWithinMargin) {
 // corners inverted as they were carried round under the rollers (step 108
 // with cr, 103 with pgs).
 TEST(ContactValidation, RollersPassTheBlockThrough) {
-  // Resolution 5 caught the block on a roller (y -0.046 m after 0.75 s, KKT
-  // residuals up to 12 m/s) until a converged iterate that meets every law
-  // stopped the solve (cr_solver.cpp) and the slip direction took secant
-  // steps (constraint_evaluation.h).
+  // At resolution 5 cr carried the block up round a roller (centre at
+  // y = +0.068 m after 1 s, KKT residuals up to 12 m/s) until a solved
+  // iterate that meets every law stopped changing states (cr_solver.cpp)
+  // and the slip direction took secant steps (constraint_evaluation.h).
   for (int resolution : {3, 5}) {
     const double dt = 0.005;
     World world(rollers(6.0, resolution, dt));
