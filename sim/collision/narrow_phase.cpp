@@ -365,7 +365,9 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   // solver pushes the edges back out. Only between two closed surfaces,
   // where inside means something; not in self-contact, where two edges on
   // either side of a ridge pass this test without having crossed.
-  if (!toi && a.index != b.index && a.closed && b.closed &&
+  // Only within the margin: "below both planes" means inside only near the
+  // edge, and a thin part (an ear) a centimetre off would pass it too.
+  if (!toi && a.index != b.index && a.closed && b.closed && sep0.norm() <= margin &&
       points_inside_at_edge(b, edge_b, c.normal) && points_inside_at_edge(a, edge_a, -c.normal))
     c.normal = -c.normal;
   c.gap = c.normal.dot(sep0);

@@ -60,7 +60,8 @@
 // triangles' planes while q - p leaves A's edge below both of its says the
 // edges have already crossed (a ridge slipped through a flat face grid,
 // which has no edge candidates, between two vertices): the normal is turned
-// round, out of B, and the gap is the negative depth. Degenerate features
+// round, out of B, and the gap is the negative depth (pairs within the
+// margin only, without an impact this step). Degenerate features
 // fall back to the direction of p - q, then the reversed relative motion,
 // finally +z.
 // Touching at the start is ambiguous where the closest point is a triangle's

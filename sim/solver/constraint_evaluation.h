@@ -34,17 +34,26 @@
 //   beside sticking neighbours it is reached linearly (rollers, resolution
 //   3, step 27: the KKT residual fell by 0.74 per solve, 20 solves after
 //   each re-linearisation). Where the direction error is below kSecantRange
-//   and shrank since the contact's last turn by at least kSecantContraction,
-//   the turn is a secant step on F(theta) = angle(u) - angle(slip) from
-//   those two turns instead, toward u and at most kSecantReach times the
-//   error. Its effect is chaotic per scene, but over the rollers at omega
-//   5, 6, 7 and resolutions 3, 4, 5 (150 steps each), with the solve's
-//   stop at KKT <= epsilon_2 (cr_solver.cpp), 470 capped steps against 538
-//   and no worst KKT above 0.6 m/s (four runs above 1 before, up to 18),
-//   and resolution 5 no longer carries the block up round a roller. The
-//   secant alone (without that stop) inverted the block at resolutions 3
-//   and 5. An earlier secant, unbounded, made the lattice of
-//   convergence_test 23 solves instead of 25 but broke convergence elsewhere;
+//   and error_now / error_before (at the contact's last turn) lies in
+//   (0, kSecantContraction), the turn is a secant step on F(theta) =
+//   angle(u) - angle(slip) from those two turns instead, toward u and at
+//   most kSecantReach times the error. A heuristic with a weak basis:
+//   - over the rollers at omega 5, 6, 7 and resolutions 3, 4, 5 (150 steps
+//     each), with the solve's stop at KKT <= epsilon_2 (cr_solver.cpp): 470
+//     capped steps against 538, no worst KKT above 0.6 m/s (four runs above
+//     1 before, up to 18), and resolution 5 no longer carries the block up
+//     round a roller;
+//   - but the remembered turn is in the contact's tangent frame, which a
+//     re-linearisation moves (and tangent_basis jumps across n.z = 0, where
+//     the rollers' normals lie). Forgetting it at each re-linearisation
+//     made that sweep 526 capped steps with worst KKT up to 1.9e4 and an
+//     inverted block; bounding error_before instead of error_now, 485 and
+//     up to 11 m/s. The gain above is within the scatter of such changes;
+//     the secant alone (without the KKT stop) inverted the block at
+//     resolutions 3 and 5. Rebasing the remembered turn into the new frame
+//     is the untried correct form;
+//   - an earlier secant, unbounded, made the lattice of convergence_test 23
+//     solves instead of 25 but broke convergence elsewhere;
 // - sticking <-> sliding changes, like Algorithm 3, are made only at
 //   converged evaluations: decided on the half-converged gamma and u of
 //   mid-solve evaluations they cycled on stiff resting bodies (boundary
@@ -70,7 +79,7 @@ inline constexpr int kAlphaStreak = 4;
 inline constexpr double kChangeShare = 0.9;
 inline constexpr double kParallel = 0.9;  // cosine above which two normal rows count as one (see below)
 inline constexpr double kRegisteredChange = 2.0;  // in epsilon_2: the smallest friction step taken
-inline constexpr double kSecantContraction = 0.95;  // the direction error must shrink at least this much per turn
+inline constexpr double kSecantContraction = 0.95;  // secant only when error_now / error_before is below this
 inline constexpr double kSecantReach = 8.0;         // a secant turn is at most this many times the error
 inline constexpr double kSecantRange = 0.1;         // rad: the secant only for direction errors below this
 

@@ -388,8 +388,10 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   // goes on to the new-contact check and re-linearisation unchanged: its
   // evaluation could only propose changes of about epsilon_2 (the friction
   // update's smallest step is twice that), each costing a restarted solve
-  // that may wander off again. Measured with the slip's secant step
-  // (constraint_evaluation.h); alone it changed nothing on the rollers.
+  // that may wander off again. It also skips the moving average of lambda'
+  // (within epsilon_2 already). Measured with the slip's secant step
+  // (constraint_evaluation.h); this stop without the secant changed nothing
+  // on the rollers.
   const bool meets_laws = remember_if_best() <= eps2;
   if (!meets_laws && evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, eps2, m_settings.max_flips, true) > 0) {
     restart_after_change();

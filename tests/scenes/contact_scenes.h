@@ -161,7 +161,9 @@ inline WorldDesc bunny_pile(const std::string& bunny_path, int count = 8, double
   });
 }
 
-// Eight bunnies in two layers of four, as assets/scenes/validation/pile.json:
+// Eight bunnies in two layers of four, laid out like
+// assets/scenes/validation/pile.json (whose bunnies are larger, finer and
+// stiffer):
 // a 2 x 2 grid `spacing` between centres, the upper layer 1.5 heights up and
 // shifted (3, -2) cm, so that each upper bunny falls about half a height onto
 // the one below it, off-centre. With h = 0.12, resolution 3: they land at

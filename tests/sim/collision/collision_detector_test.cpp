@@ -93,7 +93,8 @@ TEST(CollisionDetector, MatchesBruteForceOnRandomScenes) {
         EXPECT_FALSE(c.kind != ContactKind::vertex_plane && c.surface_a >= 2 && c.surface_b >= 2);
     }
   }
-  // The scenes really exercise every kind of pair.
+  // The scenes really exercise every kind of pair (lower counts since the
+  // candidate rule bounds approach by relative motion, narrow_phase.h).
   std::cout << "self-contact candidates over all scenes: " << self_total << "\n";
   EXPECT_GT(totals[0], 400);
   EXPECT_GT(totals[1], 400);
@@ -156,10 +157,9 @@ TEST(CollisionDetector, FarApartSurfacesAreCulledUnlessTheyMoveThrough) {
 
 TEST(CollisionDetector, BodiesFallingTogetherGiveNoCandidatesUntilTheyClose) {
   // Two spheres 1 cm apart, one above the other, both falling 3 cm in the
-  // step (a pile before its bottom lands): each moves 6 cm in all with
-  // respect to the other's points only if their motions are added, so
-  // the bound is on their relative motion (narrow_phase.h) and nothing is a
-  // candidate. With the lower one held still, the upper one closes the gap
+  // step (a pile before its bottom lands): summing their motions would allow
+  // 6 cm of approach, but their relative motion is zero (narrow_phase.h),
+  // so nothing is a candidate. With the lower one held still, the upper one closes the gap
   // within the step, and its lower vertices are.
   TriMesh lower = icosphere(2), upper = icosphere(2);
   lower.vertices *= 0.05;
