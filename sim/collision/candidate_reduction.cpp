@@ -66,12 +66,15 @@ size_t vertex_group_end(const std::vector<ContactCandidate>& sorted, size_t begi
   return end;
 }
 
+// One vertex of A against one touched feature of surface B.
+auto feature_group(const ContactCandidate& c) { return std::make_tuple(vertex_group(c), touched_feature(c.b)); }
+
 // The order both per-vertex rules read: by (surface A, vertex, surface B),
 // then touched feature, then strength.
 void sort_by_vertex_and_feature(std::vector<ContactCandidate>& vertex_triangle) {
-  auto group = [](const ContactCandidate& c) { return std::make_tuple(vertex_group(c), touched_feature(c.b)); };
   std::sort(vertex_triangle.begin(), vertex_triangle.end(), [&](const ContactCandidate& l, const ContactCandidate& r) {
-    if (group(l) != group(r)) return group(l) < group(r);
+    const auto group_l = feature_group(l), group_r = feature_group(r);
+    if (group_l != group_r) return group_l < group_r;
     return stronger(l, r);
   });
 }
@@ -120,12 +123,11 @@ std::vector<ContactCandidate> drop_points_beyond_a_closer_face(std::vector<Conta
 // feature of B), the strongest candidate and those whose normals point
 // elsewhere. Input sorted by sort_by_vertex_and_feature.
 std::vector<ContactCandidate> one_per_feature(std::vector<ContactCandidate> sorted) {
-  auto group = [](const ContactCandidate& c) { return std::make_tuple(vertex_group(c), touched_feature(c.b)); };
   std::vector<ContactCandidate> kept;
   size_t group_start = 0;  // first kept candidate of the current group
   for (size_t i = 0; i < sorted.size(); ++i) {
     ContactCandidate& c = sorted[i];
-    if (i == 0 || group(c) != group(sorted[i - 1])) group_start = kept.size();
+    if (i == 0 || feature_group(c) != feature_group(sorted[i - 1])) group_start = kept.size();
     const bool distinct =
         std::all_of(kept.begin() + static_cast<std::ptrdiff_t>(group_start), kept.end(),
                     [&](const ContactCandidate& k) { return k.normal.dot(c.normal) < kDistinctNormalCos; });

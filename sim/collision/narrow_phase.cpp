@@ -88,34 +88,43 @@ std::array<double, 3> snap_to_feature(const std::array<double, 3>& w, const std:
 
 bool on_triangle_boundary(const std::array<double, 3>& w) { return w[0] == 0.0 || w[1] == 0.0 || w[2] == 0.0; }
 
-// How far (m) the surface departs from a plane across `edge` at x0: the
-// larger distance of each of its triangles' third vertex from the other
-// triangle's plane; infinite on a boundary or non-manifold edge.
-double edge_bend(const PreparedSurface& s, int edge) {
-  const std::array<int, 2> ends = s.edges[static_cast<size_t>(edge)];
-  const std::array<int, 2> opposite = s.edge_opposite[static_cast<size_t>(edge)];
-  if (opposite[0] < 0) return std::numeric_limits<double>::infinity();
-  const Points& x = s.surface->x0;
-  const Eigen::Vector3d p = row(x, ends[0]), q = row(x, ends[1]);
-  const Eigen::Vector3d o1 = row(x, opposite[0]), o2 = row(x, opposite[1]);
-  const Eigen::Vector3d n1 = (q - p).cross(o1 - p), n2 = (q - p).cross(o2 - p);
-  if (n1.norm() == 0.0 || n2.norm() == 0.0) return std::numeric_limits<double>::infinity();  // no plane
-  return std::max(std::abs(n1.normalized().dot(o2 - p)), std::abs(n2.normalized().dot(o1 - p)));
-}
-
-// Whether direction d (unit) leaves the surface across `edge` into its
-// inside: below both its triangles' planes (counter-clockwise from outside),
-// each by more than kInsideCosine. Needs a closed surface's edge.
-constexpr double kInsideCosine = 0.1;
-bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vector3d& d) {
+// The unit normals at x0 of the two triangles across `edge` (of a
+// manifold, consistently wound edge): (lo, hi, o0) and (hi, lo, o1), so both
+// point out of a counter-clockwise surface. False when either is lost in
+// rounding.
+bool edge_face_normals(const PreparedSurface& s, int edge, Eigen::Vector3d& n_forward, Eigen::Vector3d& n_back) {
   const std::array<int, 2> ends = s.edges[static_cast<size_t>(edge)];
   const std::array<int, 2> opposite = s.edge_opposite[static_cast<size_t>(edge)];
   const Points& x = s.surface->x0;
   const Eigen::Vector3d lo = row(x, ends[0]), hi = row(x, ends[1]);
-  const Eigen::Vector3d n_forward = face_normal(lo, hi, row(x, opposite[0]));  // triangle (lo, hi, o0)
-  const Eigen::Vector3d n_back = face_normal(hi, lo, row(x, opposite[1]));     // triangle (hi, lo, o1)
+  n_forward = face_normal(lo, hi, row(x, opposite[0]));
+  n_back = face_normal(hi, lo, row(x, opposite[1]));
   if (n_forward.isZero() || n_back.isZero()) return false;
-  return d.dot(n_forward.normalized()) < -kInsideCosine && d.dot(n_back.normalized()) < -kInsideCosine;
+  n_forward.normalize();
+  n_back.normalize();
+  return true;
+}
+
+// How far (m) the surface departs from a plane across `edge` at x0: the
+// larger distance of each of its triangles' third vertex from the other
+// triangle's plane; infinite on a boundary, non-manifold or degenerate edge.
+double edge_bend(const PreparedSurface& s, int edge) {
+  const std::array<int, 2> opposite = s.edge_opposite[static_cast<size_t>(edge)];
+  Eigen::Vector3d n_forward, n_back;
+  if (opposite[0] < 0 || !edge_face_normals(s, edge, n_forward, n_back)) return std::numeric_limits<double>::infinity();
+  const Points& x = s.surface->x0;
+  const Eigen::Vector3d lo = row(x, s.edges[static_cast<size_t>(edge)][0]);
+  return std::max(std::abs(n_forward.dot(row(x, opposite[1]) - lo)), std::abs(n_back.dot(row(x, opposite[0]) - lo)));
+}
+
+// Whether direction d (unit) leaves the surface across `edge` into its
+// inside: below both its triangles' planes (counter-clockwise from outside),
+// d . n below -kInsideCosine for each. Needs a closed surface's edge.
+constexpr double kInsideCosine = 0.1;
+bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vector3d& d) {
+  Eigen::Vector3d n_forward, n_back;
+  if (!edge_face_normals(s, edge, n_forward, n_back)) return false;
+  return d.dot(n_forward) < -kInsideCosine && d.dot(n_back) < -kInsideCosine;
 }
 
 }  // namespace

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
+
 #include "core/check.h"
 #include "sim/solver/contact_rows_ops.h"
 
@@ -25,14 +27,10 @@ void reset_lambda_window(ContactTrack& track, double lambda_kinetic) {
 
 namespace {
 
-// Angle (rad) from unit vector a to unit vector b, counter-clockwise positive.
+// Angle (rad) from unit vector a to unit vector b, counter-clockwise
+// positive; atan2 of (cross, dot) is exact near 0, where a cosine is not.
 double signed_angle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
   return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-}
-
-Eigen::Vector2d rotated(const Eigen::Vector2d& v, double angle) {
-  const double c = std::cos(angle), s = std::sin(angle);
-  return Eigen::Vector2d(c * v.x() - s * v.y(), s * v.x() + c * v.y());
 }
 
 double push_lambda(ContactTrack& track, double lambda) {
@@ -132,13 +130,13 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
     if (undirected) {
       p.state.slip = aim = u_hat;
     } else {
-      const double cross = s.slip.x() * u_hat.y() - s.slip.y() * u_hat.x();
-      if (std::atan2(std::abs(cross), s.slip.dot(u_hat)) > kEpsTheta) {
+      const double error_now = signed_angle(s.slip, u_hat);  // rad, from the slip to u
+      if (std::abs(error_now) > kEpsTheta) {
         // The same measure as the KKT residual's, on lambda'.
         direction_error = slip_direction_error(rows.mu_kinetic * p.state.lambda_kinetic * w_t, u, s.slip);
         // A turn against the previous one is an overshoot: halve the gain;
         // kAlphaStreak turns the same way: the gain is too timid, double it.
-        const int turn = cross > 0.0 ? 1 : -1;
+        const int turn = error_now > 0.0 ? 1 : -1;
         if (turn == -p.track.last_turn) {
           p.track.alpha *= 0.5;
           p.track.streak = 0;
@@ -164,7 +162,6 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
         // error, the secant on F(theta) = angle(u) - angle(slip) steps to
         // its root instead (header: the bounds, and what it was measured on).
         if (p.track.turned_slip.squaredNorm() > 0.0) {
-          const double error_now = signed_angle(s.slip, u_hat);
           const double error_before = signed_angle(p.track.turned_slip, p.track.turned_u);
           const double turned = signed_angle(p.track.turned_slip, s.slip);
           const double ratio = error_now / error_before;
@@ -172,7 +169,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
               ratio < kSecantContraction) {
             const double reach = kSecantReach * std::abs(error_now);
             const double step = std::clamp(-error_now * turned / (error_now - error_before), -reach, reach);
-            if (step * error_now > 0.0) moved = rotated(s.slip, step);
+            if (step * error_now > 0.0) moved = Eigen::Rotation2Dd(step) * s.slip;
           }
         }
         p.track.turned_slip = s.slip;
