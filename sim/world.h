@@ -18,6 +18,7 @@
 // solve stands; otherwise solve_contacts runs on the rows of sim/contact,
 // warm-started from the last step's multipliers.
 #include <Eigen/Core>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -62,6 +63,8 @@ struct StepReport {
   int contacts = 0;            // constraint candidates given to the solver
   int active = 0, sticking = 0, sliding = 0;
   int solver_restarts = 0;
+  // cr / cr_plain: Krylov solves started per cause and the iterations they took (ContactSolverStats).
+  std::array<int, kKrylovStarts> krylov_starts{}, krylov_iterations{};
   double max_penetration = 0.0;  // m, largest over contacts after the step (>= 0)
   Profile profile;
 };

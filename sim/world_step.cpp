@@ -171,6 +171,8 @@ void World::collide_and_solve(StepReport& report) {
   report.sliding = stats.sliding;
   report.solver_iterations = stats.iterations;
   report.solver_restarts = stats.restarts;
+  report.krylov_starts = stats.starts;
+  report.krylov_iterations = stats.iterations_after;
   report.solver_residual = stats.residual;
   report.solver_kkt = stats.kkt;
   report.solver_converged = stats.converged;

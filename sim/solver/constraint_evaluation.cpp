@@ -259,8 +259,9 @@ void hold_back_parallel_activations(const ContactProblem& problem, const std::ve
 
 }  // namespace
 
-int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
-                         const std::vector<Eigen::Matrix3d>& inv_diag, double eps2, int max_flips, bool converged) {
+EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
+                                       const std::vector<Eigen::Matrix3d>& inv_diag, double eps2, int max_flips,
+                                       bool converged) {
   const int m = static_cast<int>(problem.rows.size());
   const int n = static_cast<int>(y.size()) - 3 * m;
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
@@ -302,7 +303,7 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
     if (p.accept && p.mode_change && p.violation < kChangeShare * worst) p.accept = false;
   hold_back_parallel_activations(problem, tracks, inv_diag, converged, proposals);
   // Apply the accepted proposals.
-  int changed = 0;
+  EvaluationChanges changed;
   for (int k = 0; k < m; ++k) {
     const Proposal& p = proposals[static_cast<size_t>(k)];
     if (!p.accept) continue;
@@ -310,8 +311,12 @@ int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tra
     ContactTrack& track = tracks[static_cast<size_t>(k)];
     track = p.track;
     y.segment<3>(n + 3 * k) = p.f;
-    if (p.mode_change) ++track.flips;
-    ++changed;
+    if (p.mode_change) {
+      ++track.flips;
+      ++changed.mode_changes;
+    } else {
+      ++changed.friction_updates;
+    }
   }
   return changed;
 }

@@ -166,7 +166,13 @@ void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 // iteration over whole solves, and feeding it the half-converged u of
 // mid-solve evaluations made it chase its own tail (restart cycles on
 // random coupled problems). Returns the number of contacts changed.
-int evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
-                         const std::vector<Eigen::Matrix3d>& inv_diag, double eps2, int max_flips, bool converged);
+struct EvaluationChanges {
+  int mode_changes = 0;      // contacts switched on or off, or between sticking and sliding
+  int friction_updates = 0;  // sliding contacts whose lambda' or slip direction moved, mode kept
+  int total() const { return mode_changes + friction_updates; }
+};
+EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
+                                       const std::vector<Eigen::Matrix3d>& inv_diag, double eps2, int max_flips,
+                                       bool converged);
 
 }  // namespace recoil::sim

@@ -21,6 +21,7 @@
 //   f_k = [lambda, gamma] (sticking) or [lambda, -mu_kinetic lambda' slip]
 //   (sliding), f_k = 0 when inactive.
 #include <Eigen/Core>
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -83,6 +84,23 @@ struct ContactSolverSettings {
   CrPreconditioner preconditioner = CrPreconditioner::block_jacobi;
 };
 
+// What started each Krylov solve of `cr` / `cr_plain` (issue #5: where the
+// iterations go). Every accepted change of the system throws the Krylov
+// space away, and the iterations that follow re-solve from the true
+// residual: first_solve is the start, the others are restarts.
+enum class KrylovStart {
+  first_solve,      // the step's first solve, from the warm start
+  contact_switch,   // a mid-solve evaluation switched contacts on or off
+  friction_mode,    // a converged evaluation changed some contact's mode (on/off, sticking/sliding)
+  friction_update,  // a converged evaluation only moved sliding impulses (lambda', slip direction)
+  new_contacts,     // the new-collision check added rows
+  relinearization,  // the rows were recomputed at the predicted positions
+  recheck,          // the recurrence's residual was below tolerance: recomputed explicitly
+  breakdown,        // the CR recurrence broke down
+};
+inline constexpr int kKrylovStarts = 8;
+const char* to_string(KrylovStart start);
+
 struct ContactSolverStats {
   int iterations = 0;
   int restarts = 0;            // CR restarts (active-set changes, breakdowns)
@@ -98,6 +116,9 @@ struct ContactSolverStats {
   double kkt = 0.0;
   // Added with issue #5: contacts that reached max_flips (frozen in the active state; cr only).
   int frozen = 0;
+  // Added with issue #5 (cr and cr_plain only): Krylov solves started per
+  // cause, and the iterations each cause's solves took (until the next start).
+  std::array<int, kKrylovStarts> starts{}, iterations_after{};
 };
 
 // What the solver calls back, once converged, for Algorithm 1's outer loop:

@@ -65,10 +65,11 @@ class CrSolver {
   void recompute_residual();
   void update_stationary();
   void restart_true();
-  void restart();
+  void restart(KrylovStart cause);
   void restart_recurrence();
   void rescue_step();
-  void restart_after_change();
+  void restart_after_change(KrylovStart cause);
+  void count_iteration();
   enum class Finish { converged, not_converged, go_on };
   Finish finish_or_continue();
   bool step();
@@ -95,6 +96,7 @@ class CrSolver {
   double m_residual_norm = 0.0, m_residual_inf = 0.0;
   double m_rho = 0.0;
   int m_since_restart = 0;
+  KrylovStart m_start = KrylovStart::first_solve;  // what started the current Krylov solve
   bool m_residual_true = false;
   bool m_stationary = false;       // scaled |B C^-1 r| < epsilon_1 (Algorithm 1 line 21)
   bool m_relinearized_ok = false;  // the last relinearize moved nothing beyond epsilon_2, and nothing changed since
@@ -278,9 +280,16 @@ void CrSolver::restart_true() {
 }
 
 // restart_true(), counted in the stats (the first start is not a restart).
-void CrSolver::restart() {
+void CrSolver::restart(KrylovStart cause) {
   ++m_stats.restarts;
+  m_start = cause;
+  ++m_stats.starts[static_cast<size_t>(cause)];
   restart_true();
+}
+
+void CrSolver::count_iteration() {
+  ++m_stats.iterations;
+  ++m_stats.iterations_after[static_cast<size_t>(m_start)];
 }
 
 void CrSolver::restart_recurrence() {
@@ -311,7 +320,7 @@ void CrSolver::rescue_step() {
   m_r -= alpha * bdir;
   m_residual_norm_known = false;
   m_residual_true = false;
-  ++m_stats.iterations;
+  count_iteration();
   apply_Cinv(m_r, m_z);
   m_p = m_z;
   apply_B(m_z, m_bz);
@@ -324,10 +333,10 @@ void CrSolver::rescue_step() {
 // side follows and the Krylov space restarts from the true residual. The
 // iterate moves on from here, so an earlier re-linearisation no longer
 // describes where it will end, and convergence needs a fresh one.
-void CrSolver::restart_after_change() {
+void CrSolver::restart_after_change(KrylovStart cause) {
   m_relinearized_ok = false;
   build_rhs();
-  restart();
+  restart(cause);
 }
 
 // One CR iteration (Algorithm 1 lines 9-21). Returns false when it had to
@@ -336,7 +345,7 @@ bool CrSolver::step() {
   apply_Cinv(m_q, m_t);
   const double den = m_q.dot(m_t);
   if (!(den > 0.0)) {
-    restart();
+    restart(KrylovStart::breakdown);
     return false;
   }
   const double alpha = m_rho / den;
@@ -345,7 +354,7 @@ bool CrSolver::step() {
   m_residual_norm_known = false;
   m_z -= alpha * m_t;
   m_residual_true = false;
-  ++m_stats.iterations;
+  count_iteration();
   ++m_since_restart;
   if (alpha > 0.0) {
     double constraint_inf = 0.0;
@@ -353,8 +362,9 @@ bool CrSolver::step() {
     const double decades = res > m_settings.tolerance ? std::log10(res / m_settings.tolerance) : 0.0;
     const int interval = std::max(1, static_cast<int>(std::floor(decades * decades / 2.0)));
     if (m_since_restart % interval == 0 &&
-        evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, m_settings.constraint_tolerance, m_settings.max_flips, false) > 0) {
-      restart_after_change();
+        evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, m_settings.constraint_tolerance, m_settings.max_flips, false)
+                .total() > 0) {
+      restart_after_change(KrylovStart::contact_switch);
       return false;
     }
   }
@@ -362,7 +372,7 @@ bool CrSolver::step() {
   update_stationary();
   const double rho = m_z.dot(m_bz);
   if (std::abs(rho) <= kBreakdown * m_z.norm() * m_bz.norm()) {
-    restart();
+    restart(KrylovStart::breakdown);
     return false;
   }
   const double beta = rho / m_rho;
@@ -379,7 +389,7 @@ bool CrSolver::step() {
 // any further change; at the re-linearisation cap the solve ends unconverged.
 CrSolver::Finish CrSolver::finish_or_continue() {
   if (!m_residual_true) {
-    restart();
+    restart(KrylovStart::recheck);
     return Finish::go_on;
   }
   const double eps2 = m_settings.constraint_tolerance;
@@ -393,9 +403,13 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   // (constraint_evaluation.h); this stop without the secant changed nothing
   // on the rollers.
   const bool meets_laws = remember_if_best() <= eps2;
-  if (!meets_laws && evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, eps2, m_settings.max_flips, true) > 0) {
-    restart_after_change();
-    return Finish::go_on;
+  if (!meets_laws) {
+    const EvaluationChanges changes =
+        evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, eps2, m_settings.max_flips, true);
+    if (changes.total() > 0) {
+      restart_after_change(changes.mode_changes > 0 ? KrylovStart::friction_mode : KrylovStart::friction_update);
+      return Finish::go_on;
+    }
   }
   if (m_linearization == nullptr) return Finish::converged;
   const Eigen::VectorXd dv = m_y.head(m_n);
@@ -405,7 +419,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
     grow_contacts();
     refresh_rows();
     remeasure_best();
-    restart_after_change();
+    restart_after_change(KrylovStart::new_contacts);
     return Finish::go_on;
   }
   if (m_relinearized_ok) return Finish::converged;
@@ -419,7 +433,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   refresh_rows();
   remeasure_best();
   build_rhs();
-  restart();
+  restart(KrylovStart::relinearization);
   return Finish::go_on;
 }
 
@@ -502,6 +516,7 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   start_from_warm_states();
   refresh_rows();
   build_rhs();
+  ++m_stats.starts[static_cast<size_t>(KrylovStart::first_solve)];
   restart_true();
   m_stats.converged = false;
   while (!out_of_budget()) {

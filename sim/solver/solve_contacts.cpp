@@ -28,6 +28,20 @@ const char* to_string(CrPreconditioner preconditioner) {
   return "unknown";
 }
 
+const char* to_string(KrylovStart start) {
+  switch (start) {
+    case KrylovStart::first_solve: return "first solve";
+    case KrylovStart::contact_switch: return "contact switch";
+    case KrylovStart::friction_mode: return "mode change";
+    case KrylovStart::friction_update: return "friction update";
+    case KrylovStart::new_contacts: return "new contacts";
+    case KrylovStart::relinearization: return "relinearization";
+    case KrylovStart::recheck: return "recheck";
+    case KrylovStart::breakdown: return "breakdown";
+  }
+  return "unknown";
+}
+
 ContactSolverStats solve_contacts(ContactProblem& problem, const ContactSolverSettings& settings,
                                   Eigen::VectorXd& dv, ContactLinearization* linearization) {
   RECOIL_CHECK(problem.A != nullptr);

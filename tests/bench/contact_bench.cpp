@@ -5,6 +5,7 @@
 // iterations per step, ms per step (whole step and solve stage), the final
 // worst KKT residual over the steps and the largest penetration; then the ratios cr/pgs time and
 // cr_plain/cr iterations. Reports only; nothing is asserted.
+#include <array>
 #include <iostream>
 #include <string>
 
@@ -20,6 +21,8 @@ struct Row {
   long not_converged = 0;
   int steps = 0;       // steps measured (fewer than asked when the world blew up)
   bool blew_up = false;
+  // cr / cr_plain: Krylov solves started per cause, and their iterations, summed over the steps.
+  std::array<double, sim::kKrylovStarts> starts{}, start_iterations{};
 };
 
 // The state every method starts from: `warmup` steps of `cr` from the
@@ -49,6 +52,10 @@ Row run_scene(sim::WorldDesc desc, sim::SolverMethod method, const Start& start,
     row.solve_ms += r.profile.solve;
     row.kkt = std::max(row.kkt, r.solver_kkt);
     row.penetration = std::max(row.penetration, r.max_penetration);
+    for (int c = 0; c < sim::kKrylovStarts; ++c) {
+      row.starts[static_cast<size_t>(c)] += r.krylov_starts[static_cast<size_t>(c)];
+      row.start_iterations[static_cast<size_t>(c)] += r.krylov_iterations[static_cast<size_t>(c)];
+    }
     // A blown-up world only gets slower (tens of thousands of candidates);
     // the row says so instead of timing it.
     if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup) {
@@ -61,6 +68,19 @@ Row run_scene(sim::WorldDesc desc, sim::SolverMethod method, const Start& start,
   row.step_ms /= row.steps;
   row.solve_ms /= row.steps;
   return row;
+}
+
+// One row of the causes table: per cause, solves per step and the share of
+// all iterations that those solves took.
+std::vector<std::string> cause_cells(const std::string& scene, sim::SolverMethod method, const Row& row) {
+  double total = 0.0;
+  for (double it : row.start_iterations) total += it;
+  std::vector<std::string> cells = {scene, sim::to_string(method)};
+  for (int c = 0; c < sim::kKrylovStarts; ++c) {
+    const double share = total > 0.0 ? 100.0 * row.start_iterations[static_cast<size_t>(c)] / total : 0.0;
+    cells.push_back(fixed(row.starts[static_cast<size_t>(c)] / row.steps, 1) + " (" + fixed(share, 0) + "%)");
+  }
+  return cells;
 }
 
 void bench_contact() {
@@ -91,6 +111,11 @@ void bench_contact() {
                    {"scene", "method", "steps (after warm-up)", "iterations/step", "ms/step", "solve ms/step", "worst KKT m/s",
                     "max penetration mm", "not converged"});
   BenchTable ratios("contact solver ratios", {"scene", "cr/pgs time", "cr_plain/cr iterations"});
+  // Where the Krylov iterations go (issue #5): every accepted change of the
+  // system restarts the solve, and the restarted solve pays for itself again.
+  std::vector<std::string> cause_columns = {"scene", "method"};
+  for (int c = 0; c < sim::kKrylovStarts; ++c) cause_columns.push_back(sim::to_string(static_cast<sim::KrylovStart>(c)));
+  BenchTable causes("Krylov solves per step by what started them (share of the iterations)", cause_columns);
   for (const Scene& scene : scenes) {
     Row rows[3];
     const Start start = warm_up(scene.desc, scene.warmup);
@@ -102,12 +127,14 @@ void bench_contact() {
                                 (rows[m].blew_up ? ", blew up" : "");
       table.add_row({scene.name, sim::to_string(methods[m]), steps, fixed(rows[m].iterations, 1), fixed(rows[m].step_ms, 2), fixed(rows[m].solve_ms, 2), scientific(rows[m].kkt),
                      fixed(rows[m].penetration * 1e3, 3), std::to_string(rows[m].not_converged)});
+      if (methods[m] != sim::SolverMethod::pgs) causes.add_row(cause_cells(scene.name, methods[m], rows[m]));
     }
     ratios.add_row({scene.name, fixed(rows[0].solve_ms / std::max(rows[2].solve_ms, 1e-9), 2),
                     fixed(rows[1].iterations / std::max(rows[0].iterations, 1e-9), 2)});
   }
   table.print();
   ratios.print();
+  causes.print();
 }
 
 const Register registered_contact("contact", bench_contact);

@@ -39,7 +39,7 @@ struct PointWithThreeContacts {
   }
   bool active(int k) const { return owned.problem.states[static_cast<size_t>(k)].mode != ContactMode::inactive; }
   int evaluate(bool converged) {
-    return evaluate_constraints(owned.problem, tracks, y, inv_diag, kEps2, kMaxFlips, converged);
+    return evaluate_constraints(owned.problem, tracks, y, inv_diag, kEps2, kMaxFlips, converged).total();
   }
 };
 

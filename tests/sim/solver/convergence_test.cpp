@@ -120,6 +120,43 @@ TEST(SolverConvergence, PreconditionerCutsIterationsOnFemCube) {
   EXPECT_LT((cr.dv - plain.dv).lpNorm<Eigen::Infinity>(), 1e-4);
 }
 
+// The per-cause counts of Krylov solves (ContactSolverStats::starts) add up
+// to the restarts plus the first solve, and their iterations to all the
+// iterations. The sliding FEM cube restarts for friction updates: lambda'
+// and the slip direction are a fixed point over whole solves.
+TEST(SolverConvergence, KrylovStartsAccountForEveryRestartAndIteration) {
+  for (double drift : {FemBlockParams{}.drift, 0.0}) {
+    const FemBlockParams params = fem_cube(4, 1e6, drift);
+    const OwnedProblem owned = fem_block_on_ground(params);
+    for (SolverMethod method : {SolverMethod::cr, SolverMethod::cr_plain}) {
+      ContactSolverSettings settings;
+      settings.method = method;
+      settings.max_iterations = 50000;
+      const auto s = solve_copy(owned.problem, settings);
+      ASSERT_TRUE(s.stats.converged) << describe(params) << " " << to_string(method);
+      int starts = 0, iterations = 0;
+      std::cout << describe(params) << ", " << to_string(method) << ":";
+      for (int c = 0; c < kKrylovStarts; ++c) {
+        starts += s.stats.starts[static_cast<size_t>(c)];
+        iterations += s.stats.iterations_after[static_cast<size_t>(c)];
+        std::cout << " " << to_string(static_cast<KrylovStart>(c)) << " " << s.stats.starts[static_cast<size_t>(c)] << " ("
+                  << s.stats.iterations_after[static_cast<size_t>(c)] << " it)";
+      }
+      std::cout << "\n";
+      EXPECT_EQ(s.stats.starts[static_cast<size_t>(KrylovStart::first_solve)], 1);
+      EXPECT_EQ(starts, s.stats.restarts + 1);
+      EXPECT_EQ(iterations, s.stats.iterations);
+      if (drift > 0.0) {
+        EXPECT_GT(s.stats.starts[static_cast<size_t>(KrylovStart::friction_update)], 0) << to_string(method);
+      }
+    }
+  }
+  // pgs has no Krylov solves.
+  const OwnedProblem owned = fem_block_on_ground(fem_cube(3, 1e6, 0.0));
+  const auto pgs = solve_copy(owned.problem, tight(SolverMethod::pgs, 1e-8));
+  for (int c = 0; c < kKrylovStarts; ++c) EXPECT_EQ(pgs.stats.starts[static_cast<size_t>(c)], 0);
+}
+
 // A stiff FEM cube resting on its bottom nodes: the boundary contacts sit
 // near the cone's rim. Deciding sticking <-> sliding on mid-solve iterates
 // made them cycle until max_flips froze them in a wrong mode (reported
