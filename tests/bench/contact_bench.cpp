@@ -4,7 +4,8 @@
 // counter-rotating rollers. Per method: mean solver
 // iterations per step, ms per step (whole step and solve stage), the final
 // worst KKT residual over the steps and the largest penetration; then the ratios cr/pgs time and
-// cr_plain/cr iterations. Reports only; nothing is asserted.
+// cr_plain/cr iterations, and for cr and cr_plain what started each Krylov solve (where the
+// iterations go). Reports only; nothing is asserted.
 #include <array>
 #include <iostream>
 #include <string>
