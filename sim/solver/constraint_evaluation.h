@@ -165,7 +165,8 @@ void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 // the current system): lambda' and the slip direction are a fixed-point
 // iteration over whole solves, and feeding it the half-converged u of
 // mid-solve evaluations made it chase its own tail (restart cycles on
-// random coupled problems). Returns the number of contacts changed.
+// random coupled problems). Returns how many contacts changed, mode changes
+// and friction updates apart (the solver's stats tell the restarts apart).
 struct EvaluationChanges {
   int mode_changes = 0;      // contacts switched on or off, or between sticking and sliding
   int friction_updates = 0;  // sliding contacts whose lambda' or slip direction moved, mode kept

@@ -91,7 +91,7 @@ struct ContactSolverSettings {
 enum class KrylovStart {
   first_solve,      // the step's first solve, from the warm start
   contact_switch,   // a mid-solve evaluation switched contacts on or off
-  friction_mode,    // a converged evaluation changed some contact's mode (on/off, sticking/sliding)
+  mode_change,      // a converged evaluation changed some contact's mode (on/off, sticking/sliding)
   friction_update,  // a converged evaluation only moved sliding impulses (lambda', slip direction)
   new_contacts,     // the new-collision check added rows
   relinearization,  // the rows were recomputed at the predicted positions
@@ -99,6 +99,7 @@ enum class KrylovStart {
   breakdown,        // the CR recurrence broke down
 };
 inline constexpr int kKrylovStarts = 8;
+static_assert(static_cast<int>(KrylovStart::breakdown) + 1 == kKrylovStarts, "one count per KrylovStart");
 const char* to_string(KrylovStart start);
 
 struct ContactSolverStats {

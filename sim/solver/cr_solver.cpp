@@ -407,7 +407,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
     const EvaluationChanges changes =
         evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, eps2, m_settings.max_flips, true);
     if (changes.total() > 0) {
-      restart_after_change(changes.mode_changes > 0 ? KrylovStart::friction_mode : KrylovStart::friction_update);
+      restart_after_change(changes.mode_changes > 0 ? KrylovStart::mode_change : KrylovStart::friction_update);
       return Finish::go_on;
     }
   }

@@ -32,7 +32,7 @@ const char* to_string(KrylovStart start) {
   switch (start) {
     case KrylovStart::first_solve: return "first solve";
     case KrylovStart::contact_switch: return "contact switch";
-    case KrylovStart::friction_mode: return "mode change";
+    case KrylovStart::mode_change: return "mode change";
     case KrylovStart::friction_update: return "friction update";
     case KrylovStart::new_contacts: return "new contacts";
     case KrylovStart::relinearization: return "relinearization";
