@@ -277,12 +277,13 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
     p = Proposal{s, f, track, false, false};
     if (rows.nodes.empty()) continue;  // touches only fixed DoF: nothing to solve for
     const bool frozen = track.flips >= max_flips;
-    const Eigen::Vector3d jdv = rows_times(rows, dv);
-    const double slack = jdv[0] - rows.rhs_normal;
-    const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
     if (s.mode == ContactMode::inactive) {
+      // Most candidates are inactive and stay so: their normal row decides,
+      // and the tangent rows are read only for one that comes on.
+      const double slack = normal_row_times(rows, dv) - rows.rhs_normal;
       // Activation is allowed even past max_flips: freezing happens in the active state.
       if (slack < -eps2 && !track.locked_off) {  // penetrating: activate, sliding
+        const Eigen::Vector2d u = rows_times(rows, dv).tail<2>() - rows.rhs_tangent;
         p.state.mode = ContactMode::sliding;
         p.state.lambda_kinetic = 0.0;
         const double speed = u.norm();
@@ -294,6 +295,9 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
         p.violation = -slack;
       }
     } else {
+      const Eigen::Vector3d jdv = rows_times(rows, dv);
+      const double slack = jdv[0] - rows.rhs_normal;
+      const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
       p = evaluate_active(rows, s, track, f, slack, u, eps2, frozen, converged);
     }
     if (p.accept && p.mode_change) worst = std::max(worst, p.violation);

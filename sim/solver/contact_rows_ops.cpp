@@ -18,6 +18,21 @@ void add_rows_transpose_times(const ContactRows& rows, const Eigen::Vector3d& f,
     out.segment<3>(3 * rows.nodes[i]).noalias() += rows.blocks[i].transpose() * f;
 }
 
+double normal_row_times(const ContactRows& rows, const Eigen::VectorXd& dv) {
+  double out = 0.0;
+  for (size_t i = 0; i < rows.nodes.size(); ++i) {
+    const Eigen::Matrix3d& b = rows.blocks[i];
+    const Eigen::Vector3d v = dv.segment<3>(3 * rows.nodes[i]);
+    out += b(0, 0) * v[0] + b(0, 1) * v[1] + b(0, 2) * v[2];
+  }
+  return out;
+}
+
+void add_normal_row_transpose_times(const ContactRows& rows, double lambda, Eigen::VectorXd& out) {
+  for (size_t i = 0; i < rows.nodes.size(); ++i)
+    out.segment<3>(3 * rows.nodes[i]).noalias() += rows.blocks[i].row(0).transpose() * lambda;
+}
+
 std::vector<Eigen::Matrix3d> inverse_diagonal_blocks(const BlockSparseMatrix& A) {
   std::vector<Eigen::Matrix3d> out(static_cast<size_t>(A.block_rows()));
   for (int r = 0; r < A.block_rows(); ++r) {

@@ -16,6 +16,11 @@ Eigen::Vector3d rows_times(const ContactRows& rows, const Eigen::VectorXd& dv);
 // out += J_k^T f (f = (normal, t1, t2) impulses, N s). out is #DoF.
 void add_rows_transpose_times(const ContactRows& rows, const Eigen::Vector3d& f, Eigen::VectorXd& out);
 
+// The normal row alone: J_n dv (m/s), and out += J_n^T lambda (N s). For a
+// sliding contact, whose tangent rows are not selected, in the CR product.
+double normal_row_times(const ContactRows& rows, const Eigen::VectorXd& dv);
+void add_normal_row_transpose_times(const ContactRows& rows, double lambda, Eigen::VectorXd& out);
+
 // The inverted 3x3 diagonal blocks of A, one per node (P_A^-1 of METHOD.md section 5).
 std::vector<Eigen::Matrix3d> inverse_diagonal_blocks(const BlockSparseMatrix& A);
 

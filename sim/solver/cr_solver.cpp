@@ -188,13 +188,22 @@ void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   Eigen::VectorXd& top = m_scratch_top;
   dv = x.head(m_n);
   m_problem.A->multiply(dv, top);
+  // An unselected row reads -f; only the selected rows touch J (most
+  // candidates are inactive, and a sliding contact selects its normal only).
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
-    Eigen::Vector3d mask(normal_on(k) ? 1.0 : 0.0, tangent_on(k) ? 1.0 : 0.0, tangent_on(k) ? 1.0 : 0.0);
-    const Eigen::Vector3d f = x.segment<3>(m_n + 3 * k);
-    add_rows_transpose_times(rows, -mask.cwiseProduct(f), top);
-    const Eigen::Vector3d jdv = rows_times(rows, dv);
-    out.segment<3>(m_n + 3 * k) = -mask.cwiseProduct(jdv) - (Eigen::Vector3d::Ones() - mask).cwiseProduct(f);
+    const int base = m_n + 3 * k;
+    if (tangent_on(k)) {
+      const Eigen::Vector3d f = x.segment<3>(base);
+      add_rows_transpose_times(rows, -f, top);
+      out.segment<3>(base) = -rows_times(rows, dv);
+    } else if (normal_on(k)) {
+      add_normal_row_transpose_times(rows, -x[base], top);
+      out[base] = -normal_row_times(rows, dv);
+      out.segment<2>(base + 1) = -x.segment<2>(base + 1);
+    } else {
+      out.segment<3>(base) = -x.segment<3>(base);
+    }
   }
   out.head(m_n) = top;
 }
