@@ -273,8 +273,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
     const ContactState& s = problem.states[static_cast<size_t>(k)];
     const ContactTrack& track = tracks[static_cast<size_t>(k)];
     const Eigen::Vector3d f = y.segment<3>(n + 3 * k);
-    Proposal& p = proposals[static_cast<size_t>(k)];
-    p = Proposal{s, f, track, false, false};
+    Proposal& p = proposals[static_cast<size_t>(k)];  // not accepted unless filled in below
     if (rows.nodes.empty()) continue;  // touches only fixed DoF: nothing to solve for
     const bool frozen = track.flips >= max_flips;
     if (s.mode == ContactMode::inactive) {
@@ -284,6 +283,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
       // Activation is allowed even past max_flips: freezing happens in the active state.
       if (slack < -eps2 && !track.locked_off) {  // penetrating: activate, sliding
         const Eigen::Vector2d u = rows_times(rows, dv).tail<2>() - rows.rhs_tangent;
+        p = Proposal{s, f, track, false, false};
         p.state.mode = ContactMode::sliding;
         p.state.lambda_kinetic = 0.0;
         const double speed = u.norm();

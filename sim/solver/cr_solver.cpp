@@ -61,6 +61,7 @@ class CrSolver {
   void apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   void apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   double scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const;
+  bool scaled_norm_below(const Eigen::VectorXd& r, double bound) const;
   double residual_norm(double& constraint_inf);
   void recompute_residual();
   void update_stationary();
@@ -92,6 +93,10 @@ class CrSolver {
   std::vector<ContactTrack> m_tracks;
   std::vector<Eigen::Matrix3d> m_contact_inv;  // (J_k P_A^-1 J_k^T)^-1 per contact (zero: use the diagonal)
   Eigen::VectorXd m_y, m_d, m_r, m_z, m_p, m_q, m_t, m_bz;
+  // Per constraint row (3 #contacts), what scaled_norm multiplies it by: 1 on
+  // a selected row, the row's effective inverse mass on an unselected one.
+  // Set with the right-hand side (build_rhs), whenever states or rows change.
+  Eigen::VectorXd m_row_scale;
   bool m_residual_norm_known = false;  // m_residual_norm / m_residual_inf describe m_r
   double m_residual_norm = 0.0, m_residual_inf = 0.0;
   double m_rho = 0.0;
@@ -178,6 +183,13 @@ void CrSolver::build_rhs() {
     if (normal_on(k)) m_d[m_n + 3 * k] = -rows.rhs_normal;
     if (tangent_on(k)) m_d.segment<2>(m_n + 3 * k + 1) = -rows.rhs_tangent;
   }
+  // scaled_norm's factors follow the states here, as the right-hand side does.
+  m_row_scale.resize(3 * m);
+  for (int k = 0; k < m; ++k)
+    for (int r = 0; r < 3; ++r) {
+      const double w = row_w(k, r);
+      m_row_scale[3 * k + r] = row_on(k, r) || w <= 0.0 ? 1.0 : w;
+    }
 }
 
 void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
@@ -247,13 +259,11 @@ double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) c
   double sum = 0.0;
   for (int i = 0; i < m_n / 3; ++i) sum += (m_inv_diag[static_cast<size_t>(i)] * r.segment<3>(3 * i)).squaredNorm();
   constraint_inf = 0.0;
-  for (int k = 0; k < contacts(); ++k)
-    for (int r_i = 0; r_i < 3; ++r_i) {
-      const double w = row_w(k, r_i);
-      const double v = r[m_n + 3 * k + r_i] * (row_on(k, r_i) || w <= 0.0 ? 1.0 : w);
-      sum += v * v;
-      constraint_inf = std::max(constraint_inf, std::abs(v));
-    }
+  for (int i = 0; i < 3 * contacts(); ++i) {
+    const double v = r[m_n + i] * m_row_scale[i];
+    sum += v * v;
+    constraint_inf = std::max(constraint_inf, std::abs(v));
+  }
   return std::sqrt(sum);
 }
 
@@ -276,10 +286,26 @@ void CrSolver::recompute_residual() {
   m_residual_true = true;
 }
 
+// Whether scaled_norm(r) < bound, summed in the same order; it stops as
+// soon as the partial sum is well past bound^2 (the sum only grows), which
+// it is on almost every iteration.
+bool CrSolver::scaled_norm_below(const Eigen::VectorXd& r, double bound) const {
+  const double past = 4.0 * bound * bound;
+  double sum = 0.0;
+  for (int i = 0; i < m_n / 3; ++i) {
+    sum += (m_inv_diag[static_cast<size_t>(i)] * r.segment<3>(3 * i)).squaredNorm();
+    if (sum > past) return false;
+  }
+  for (int i = 0; i < 3 * contacts(); ++i) {
+    const double v = r[m_n + i] * m_row_scale[i];
+    sum += v * v;
+  }
+  return std::sqrt(sum) < bound;
+}
+
 void CrSolver::update_stationary() {
   double constraint_inf = 0.0;
-  const double bcr = scaled_norm(m_bz, constraint_inf);
-  m_stationary = bcr < m_settings.tolerance && bcr < kStationary * residual_norm(constraint_inf);
+  m_stationary = scaled_norm_below(m_bz, std::min(m_settings.tolerance, kStationary * residual_norm(constraint_inf)));
 }
 
 // Restart from the explicitly recomputed residual.
