@@ -48,6 +48,7 @@ double push_lambda(ContactTrack& track, double lambda) {
 // A contact's proposed new state, multipliers and bookkeeping: applied only
 // when `accept`, so a discarded proposal changes nothing.
 struct Proposal {
+  int contact = -1;    // index into the problem's contacts
   ContactState state;
   Eigen::Vector3d f;   // multipliers for y: (lambda, gamma) with gamma = 0 unless sticking
   ContactTrack track;
@@ -61,7 +62,7 @@ struct Proposal {
 Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const ContactTrack& track,
                          const Eigen::Vector3d& f, double slack, const Eigen::Vector2d& u, double eps2, bool frozen,
                          bool converged) {
-  Proposal p{s, f, track, false, false};
+  Proposal p{-1, s, f, track, false, false};
   const double lambda = f[0];
   const Eigen::Vector2d gamma = f.tail<2>();
   const double w_t = std::max(track.w[1], track.w[2]);
@@ -226,22 +227,26 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
 // one whose normal row is within kParallel of a row already taken waits for
 // a later evaluation (the header says why). Mid-solve, the active rows count
 // as taken too; at a converged evaluation they do not, or a contact beside
-// a loaded one could never come on.
+// a loaded one could never come on. `proposals` holds the proposing
+// contacts only, in ascending contact order.
 void hold_back_parallel_activations(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
                                     const std::vector<Eigen::Matrix3d>& inv_diag, bool converged,
                                     std::vector<Proposal>& proposals) {
-  std::vector<int> order, taken;
-  for (size_t k = 0; k < proposals.size(); ++k) {
-    const bool active = problem.states[k].mode != ContactMode::inactive;
-    if (active && !converged) taken.push_back(static_cast<int>(k));
-    const Proposal& p = proposals[k];
-    if (!active && p.accept && p.mode_change) order.push_back(static_cast<int>(k));
+  std::vector<int> order, taken;  // indices into `proposals`; contact indices
+  if (!converged)
+    for (size_t k = 0; k < problem.states.size(); ++k)
+      if (problem.states[k].mode != ContactMode::inactive) taken.push_back(static_cast<int>(k));
+  for (size_t i = 0; i < proposals.size(); ++i) {
+    const Proposal& p = proposals[i];
+    const bool active = problem.states[static_cast<size_t>(p.contact)].mode != ContactMode::inactive;
+    if (!active && p.accept && p.mode_change) order.push_back(static_cast<int>(i));
   }
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return proposals[static_cast<size_t>(a)].violation > proposals[static_cast<size_t>(b)].violation;
   });
-  for (int k : order) {
-    Proposal& p = proposals[static_cast<size_t>(k)];
+  for (int i : order) {
+    Proposal& p = proposals[static_cast<size_t>(i)];
+    const int k = p.contact;
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
     const double w_k = tracks[static_cast<size_t>(k)].w[0];
     for (int t : taken) {
@@ -266,14 +271,16 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
   const int n = static_cast<int>(y.size()) - 3 * m;
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
   const Eigen::VectorXd dv = y.head(n);
-  std::vector<Proposal> proposals(static_cast<size_t>(m));
+  // Only the contacts that propose a change, in ascending order: most
+  // candidates are inactive and stay so.
+  std::vector<Proposal> proposals;
   double worst = 0.0;  // the largest violation among proposed mode changes, m/s
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
     const ContactState& s = problem.states[static_cast<size_t>(k)];
     const ContactTrack& track = tracks[static_cast<size_t>(k)];
     const Eigen::Vector3d f = y.segment<3>(n + 3 * k);
-    Proposal& p = proposals[static_cast<size_t>(k)];  // not accepted unless filled in below
+    Proposal p;
     if (rows.nodes.empty()) continue;  // touches only fixed DoF: nothing to solve for
     const bool frozen = track.flips >= max_flips;
     if (s.mode == ContactMode::inactive) {
@@ -283,7 +290,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
       // Activation is allowed even past max_flips: freezing happens in the active state.
       if (slack < -eps2 && !track.locked_off) {  // penetrating: activate, sliding
         const Eigen::Vector2d u = rows_times(rows, dv).tail<2>() - rows.rhs_tangent;
-        p = Proposal{s, f, track, false, false};
+        p = Proposal{k, s, f, track, false, false};
         p.state.mode = ContactMode::sliding;
         p.state.lambda_kinetic = 0.0;
         const double speed = u.norm();
@@ -299,8 +306,11 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
       const double slack = jdv[0] - rows.rhs_normal;
       const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
       p = evaluate_active(rows, s, track, f, slack, u, eps2, frozen, converged);
+      p.contact = k;
     }
-    if (p.accept && p.mode_change) worst = std::max(worst, p.violation);
+    if (!p.accept) continue;
+    if (p.mode_change) worst = std::max(worst, p.violation);
+    proposals.push_back(p);
   }
   // Mode changes only when among the worst (header).
   for (Proposal& p : proposals)
@@ -308,9 +318,9 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
   hold_back_parallel_activations(problem, tracks, inv_diag, converged, proposals);
   // Apply the accepted proposals.
   EvaluationChanges changed;
-  for (int k = 0; k < m; ++k) {
-    const Proposal& p = proposals[static_cast<size_t>(k)];
+  for (const Proposal& p : proposals) {
     if (!p.accept) continue;
+    const int k = p.contact;
     problem.states[static_cast<size_t>(k)] = p.state;
     ContactTrack& track = tracks[static_cast<size_t>(k)];
     track = p.track;
