@@ -5,7 +5,8 @@
 // iterations per step, ms per step (whole step and solve stage), the final
 // worst KKT residual over the steps and the largest penetration; then the ratios cr/pgs time and
 // cr_plain/cr iterations, and for cr and cr_plain what started each Krylov solve (where the
-// iterations go). Reports only; nothing is asserted.
+// iterations go). Times are the faster of two identical runs. Reports only; nothing is asserted.
+#include <algorithm>
 #include <array>
 #include <iostream>
 #include <string>
@@ -124,6 +125,11 @@ void bench_contact() {
     for (int m = 0; m < 3; ++m) {
       std::cerr << "contact bench: " << scene.name << ", " << sim::to_string(methods[m]) << "...\n";
       rows[m] = run_scene(scene.desc, methods[m], start, scene.steps);
+      // Runs are deterministic: a second one differs only in time, and the
+      // faster of the two is the one less disturbed by the machine.
+      const Row again = run_scene(scene.desc, methods[m], start, scene.steps);
+      rows[m].step_ms = std::min(rows[m].step_ms, again.step_ms);
+      rows[m].solve_ms = std::min(rows[m].solve_ms, again.solve_ms);
       const std::string steps = std::to_string(rows[m].steps) + " (" + std::to_string(scene.warmup) + ")" +
                                 (rows[m].blew_up ? ", blew up" : "");
       table.add_row({scene.name, sim::to_string(methods[m]), steps, fixed(rows[m].iterations, 1), fixed(rows[m].step_ms, 2), fixed(rows[m].solve_ms, 2), scientific(rows[m].kkt),
