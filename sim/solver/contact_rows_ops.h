@@ -16,8 +16,11 @@ Eigen::Vector3d rows_times(const ContactRows& rows, const Eigen::VectorXd& dv);
 // out += J_k^T f (f = (normal, t1, t2) impulses, N s). out is #DoF.
 void add_rows_transpose_times(const ContactRows& rows, const Eigen::Vector3d& f, Eigen::VectorXd& out);
 
-// The normal row alone: J_n dv (m/s), and out += J_n^T lambda (N s). For a
-// sliding contact, whose tangent rows are not selected, in the CR product.
+// The normal row alone: J_n dv (m/s), and out += J_n^T lambda (N s), for
+// the rows the CR product and the evaluation need without the tangents (a
+// sliding or an inactive contact). Rounded exactly as row 0 of rows_times
+// (and, but for the sign of a zero, as add_rows_transpose_times), so that
+// either path gives the same bits.
 double normal_row_times(const ContactRows& rows, const Eigen::VectorXd& dv);
 void add_normal_row_transpose_times(const ContactRows& rows, double lambda, Eigen::VectorXd& out);
 

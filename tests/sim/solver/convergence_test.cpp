@@ -76,6 +76,14 @@ OwnedProblem ill_conditioned_lattice() {
   return lattice_on_ground(4, 4, 3, 0.001, 1e4, 2000.0, 1.0 / 60.0, 0.5, 0.3, rng);
 }
 
+// The World's defaults with a generous iteration cap.
+ContactSolverSettings world_settings(SolverMethod method) {
+  ContactSolverSettings settings;
+  settings.method = method;
+  settings.max_iterations = 50000;
+  return settings;
+}
+
 ContactSolverSettings bench_settings(SolverMethod method) { return tight(method, 1e-8, 100000); }
 
 TEST(SolverConvergence, PreconditionerCutsIterations) {
@@ -129,10 +137,7 @@ TEST(SolverConvergence, KrylovStartsAccountForEveryRestartAndIteration) {
     const FemBlockParams params = fem_cube(4, 1e6, drift);
     const OwnedProblem owned = fem_block_on_ground(params);
     for (SolverMethod method : {SolverMethod::cr, SolverMethod::cr_plain}) {
-      ContactSolverSettings settings;
-      settings.method = method;
-      settings.max_iterations = 50000;
-      const auto s = solve_copy(owned.problem, settings);
+      const auto s = solve_copy(owned.problem, world_settings(method));
       ASSERT_TRUE(s.stats.converged) << describe(params) << " " << to_string(method);
       int starts = 0, iterations = 0;
       std::cout << describe(params) << ", " << to_string(method) << ":";
@@ -166,10 +171,7 @@ TEST(SolverConvergence, StiffRestingFemCubeConverges) {
   const FemBlockParams params = fem_cube(6, 1e7, 0.0);
   const OwnedProblem owned = fem_block_on_ground(params);
   for (SolverMethod method : {SolverMethod::cr, SolverMethod::pgs}) {
-    ContactSolverSettings settings;
-    settings.method = method;
-    settings.max_iterations = 50000;
-    const auto s = solve_copy(owned.problem, settings);
+    const auto s = solve_copy(owned.problem, world_settings(method));
     std::cout << describe(params) << ", " << to_string(method) << ": iterations " << s.stats.iterations
               << ", restarts " << s.stats.restarts << ", frozen " << s.stats.frozen << ", sticking "
               << s.stats.sticking << ", sliding " << s.stats.sliding << ", kkt " << s.stats.kkt << " m/s\n";
