@@ -64,7 +64,7 @@ struct StepReport {
   int active = 0, sticking = 0, sliding = 0;
   int solver_restarts = 0;
   // cr / cr_plain: Krylov solves started per cause and the iterations they took (ContactSolverStats).
-  std::array<int, kKrylovStarts> krylov_starts{}, krylov_iterations{};
+  std::array<int, kKrylovStarts> krylov_starts{}, krylov_start_iterations{};
   double max_penetration = 0.0;  // m, largest over contacts after the step (>= 0)
   Profile profile;
 };

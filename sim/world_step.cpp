@@ -172,7 +172,7 @@ void World::collide_and_solve(StepReport& report) {
   report.solver_iterations = stats.iterations;
   report.solver_restarts = stats.restarts;
   report.krylov_starts = stats.starts;
-  report.krylov_iterations = stats.iterations_after;
+  report.krylov_start_iterations = stats.start_iterations;
   report.solver_residual = stats.residual;
   report.solver_kkt = stats.kkt;
   report.solver_converged = stats.converged;

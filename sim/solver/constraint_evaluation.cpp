@@ -232,7 +232,8 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
 void hold_back_parallel_activations(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
                                     const std::vector<Eigen::Matrix3d>& inv_diag, bool converged,
                                     std::vector<Proposal>& proposals) {
-  std::vector<int> order, taken;  // indices into `proposals`; contact indices
+  std::vector<int> order;  // indices into `proposals`: the activations, deepest first
+  std::vector<int> taken;  // contact indices: the normal rows already on
   if (!converged)
     for (size_t k = 0; k < problem.states.size(); ++k)
       if (problem.states[k].mode != ContactMode::inactive) taken.push_back(static_cast<int>(k));
@@ -314,7 +315,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
   }
   // Mode changes only when among the worst (header).
   for (Proposal& p : proposals)
-    if (p.accept && p.mode_change && p.violation < kChangeShare * worst) p.accept = false;
+    if (p.mode_change && p.violation < kChangeShare * worst) p.accept = false;
   hold_back_parallel_activations(problem, tracks, inv_diag, converged, proposals);
   // Apply the accepted proposals.
   EvaluationChanges changed;

@@ -95,7 +95,7 @@ enum class KrylovStart {
   friction_update,  // a converged evaluation only moved sliding impulses (lambda', slip direction)
   new_contacts,     // the new-collision check added rows
   relinearization,  // the rows were recomputed at the predicted positions
-  recheck,          // the recurrence's residual was below tolerance: recomputed explicitly
+  recheck,          // the recurrence's residual was below tolerance (or stationary): recomputed explicitly
   breakdown,        // the CR recurrence broke down
 };
 inline constexpr int kKrylovStarts = 8;
@@ -104,7 +104,7 @@ const char* to_string(KrylovStart start);
 
 struct ContactSolverStats {
   int iterations = 0;
-  int restarts = 0;            // CR restarts (active-set changes, breakdowns)
+  int restarts = 0;            // CR restarts, every cause (`starts` below tells them apart)
   int relinearizations = 0;
   int new_contacts = 0;        // added by the mid-solve new-collision check
   double residual = 0.0;       // final true residual |d - B y|, same units as the tolerance
@@ -119,7 +119,7 @@ struct ContactSolverStats {
   int frozen = 0;
   // Added with issue #5 (cr and cr_plain only): Krylov solves started per
   // cause, and the iterations each cause's solves took (until the next start).
-  std::array<int, kKrylovStarts> starts{}, iterations_after{};
+  std::array<int, kKrylovStarts> starts{}, start_iterations{};
 };
 
 // What the solver calls back, once converged, for Algorithm 1's outer loop:

@@ -20,7 +20,8 @@ void add_rows_transpose_times(const ContactRows& rows, const Eigen::Vector3d& f,
 // the rows the CR product and the evaluation need without the tangents (a
 // sliding or an inactive contact). Rounded exactly as row 0 of rows_times
 // (and, but for the sign of a zero, as add_rows_transpose_times), so that
-// either path gives the same bits.
+// either path gives the same bits, as long as the compiler contracts no
+// multiply-add into an FMA (the project's flags do not; -mfma would).
 double normal_row_times(const ContactRows& rows, const Eigen::VectorXd& dv);
 void add_normal_row_transpose_times(const ContactRows& rows, double lambda, Eigen::VectorXd& out);
 

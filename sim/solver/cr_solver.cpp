@@ -60,8 +60,8 @@ class CrSolver {
   void build_rhs();
   void apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   void apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
+  double scaled_square_sum(const Eigen::VectorXd& r, double stop_above, double& constraint_inf) const;
   double scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const;
-  bool scaled_norm_below(const Eigen::VectorXd& r, double bound) const;
   double residual_norm(double& constraint_inf);
   void recompute_residual();
   void update_stationary();
@@ -93,10 +93,11 @@ class CrSolver {
   std::vector<ContactTrack> m_tracks;
   std::vector<Eigen::Matrix3d> m_contact_inv;  // (J_k P_A^-1 J_k^T)^-1 per contact (zero: use the diagonal)
   Eigen::VectorXd m_y, m_d, m_r, m_z, m_p, m_q, m_t, m_bz;
-  // Per constraint row (3 #contacts), what scaled_norm multiplies it by: 1 on
-  // a selected row, the row's effective inverse mass on an unselected one.
-  // Set with the right-hand side (build_rhs), whenever states or rows change.
-  Eigen::VectorXd m_row_scale;
+  // Per constraint row (3 #contacts), set with the right-hand side
+  // (build_rhs), whenever states or rows change: what scaled_norm multiplies
+  // the row by (1 when selected, its effective inverse mass w otherwise), and
+  // what P_S^-1 divides it by (w when selected, 1 otherwise).
+  Eigen::VectorXd m_row_scale, m_row_divisor;
   bool m_residual_norm_known = false;  // m_residual_norm / m_residual_inf describe m_r
   double m_residual_norm = 0.0, m_residual_inf = 0.0;
   double m_rho = 0.0;
@@ -183,12 +184,14 @@ void CrSolver::build_rhs() {
     if (normal_on(k)) m_d[m_n + 3 * k] = -rows.rhs_normal;
     if (tangent_on(k)) m_d.segment<2>(m_n + 3 * k + 1) = -rows.rhs_tangent;
   }
-  // scaled_norm's factors follow the states here, as the right-hand side does.
+  // The per-row factors follow the states here, as the right-hand side does.
   m_row_scale.resize(3 * m);
+  m_row_divisor.resize(3 * m);
   for (int k = 0; k < m; ++k)
     for (int r = 0; r < 3; ++r) {
       const double w = row_w(k, r);
       m_row_scale[3 * k + r] = row_on(k, r) || w <= 0.0 ? 1.0 : w;
+      m_row_divisor[3 * k + r] = row_on(k, r) && w > 0.0 ? w : 1.0;
     }
 }
 
@@ -244,10 +247,7 @@ void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const 
       out.segment<3>(base) = m_contact_inv[static_cast<size_t>(k)] * x.segment<3>(base);
       continue;
     }
-    for (int r = 0; r < 3; ++r) {
-      const double w = row_w(k, r);
-      out[base + r] = row_on(k, r) && w > 0.0 ? x[base + r] / w : x[base + r];
-    }
+    for (int r = 0; r < 3; ++r) out[base + r] = x[base + r] / m_row_divisor[3 * k + r];
   }
 }
 
@@ -255,16 +255,26 @@ void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const 
 // rows as they are, unselected rows (a multiplier that should be zero)
 // through the row's effective inverse mass. Independent of the
 // preconditioner, so cr and cr_plain stop at the same accuracy.
-double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const {
+// Returns the sum of squares; it stops early, with a partial sum above
+// `stop_above`, once the sum passes it (the sum only grows).
+double CrSolver::scaled_square_sum(const Eigen::VectorXd& r, double stop_above, double& constraint_inf) const {
+  RECOIL_CHECK(m_row_scale.size() == 3 * contacts(), "row factors out of step with the contacts");
   double sum = 0.0;
-  for (int i = 0; i < m_n / 3; ++i) sum += (m_inv_diag[static_cast<size_t>(i)] * r.segment<3>(3 * i)).squaredNorm();
   constraint_inf = 0.0;
+  for (int i = 0; i < m_n / 3; ++i) {
+    sum += (m_inv_diag[static_cast<size_t>(i)] * r.segment<3>(3 * i)).squaredNorm();
+    if (sum > stop_above) return sum;
+  }
   for (int i = 0; i < 3 * contacts(); ++i) {
     const double v = r[m_n + i] * m_row_scale[i];
     sum += v * v;
     constraint_inf = std::max(constraint_inf, std::abs(v));
   }
-  return std::sqrt(sum);
+  return sum;
+}
+
+double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const {
+  return std::sqrt(scaled_square_sum(r, std::numeric_limits<double>::infinity(), constraint_inf));
 }
 
 // scaled_norm(m_r), kept until m_r changes: the iteration asks for it up to
@@ -286,26 +296,14 @@ void CrSolver::recompute_residual() {
   m_residual_true = true;
 }
 
-// Whether scaled_norm(r) < bound, summed in the same order; it stops as
-// soon as the partial sum is well past bound^2 (the sum only grows), which
-// it is on almost every iteration.
-bool CrSolver::scaled_norm_below(const Eigen::VectorXd& r, double bound) const {
-  const double past = 4.0 * bound * bound;
-  double sum = 0.0;
-  for (int i = 0; i < m_n / 3; ++i) {
-    sum += (m_inv_diag[static_cast<size_t>(i)] * r.segment<3>(3 * i)).squaredNorm();
-    if (sum > past) return false;
-  }
-  for (int i = 0; i < 3 * contacts(); ++i) {
-    const double v = r[m_n + i] * m_row_scale[i];
-    sum += v * v;
-  }
-  return std::sqrt(sum) < bound;
-}
-
 void CrSolver::update_stationary() {
   double constraint_inf = 0.0;
-  m_stationary = scaled_norm_below(m_bz, std::min(m_settings.tolerance, kStationary * residual_norm(constraint_inf)));
+  const double res = residual_norm(constraint_inf);
+  // |B C^-1 r| below both bounds; summing stops once well past them, which
+  // it is on almost every iteration (4 bound^2 leaves rounding no say).
+  const double bound = std::min(m_settings.tolerance, kStationary * res);
+  m_stationary = !std::isnan(res) &&
+                 std::sqrt(scaled_square_sum(m_bz, 4.0 * bound * bound, constraint_inf)) < bound;
 }
 
 // Restart from the explicitly recomputed residual.
@@ -324,7 +322,7 @@ void CrSolver::restart(KrylovStart cause) {
 
 void CrSolver::count_iteration() {
   ++m_stats.iterations;
-  ++m_stats.iterations_after[static_cast<size_t>(m_start)];
+  ++m_stats.start_iterations[static_cast<size_t>(m_start)];
 }
 
 void CrSolver::restart_recurrence() {

@@ -11,6 +11,7 @@
 #include <iostream>
 #include <string>
 
+#include "core/check.h"
 #include "sim/world.h"
 #include "tests/bench/bench.h"
 #include "tests/scenes/contact_scenes.h"
@@ -56,7 +57,7 @@ Row run_scene(sim::WorldDesc desc, sim::SolverMethod method, const Start& start,
     row.penetration = std::max(row.penetration, r.max_penetration);
     for (int c = 0; c < sim::kKrylovStarts; ++c) {
       row.starts[static_cast<size_t>(c)] += r.krylov_starts[static_cast<size_t>(c)];
-      row.start_iterations[static_cast<size_t>(c)] += r.krylov_iterations[static_cast<size_t>(c)];
+      row.start_iterations[static_cast<size_t>(c)] += r.krylov_start_iterations[static_cast<size_t>(c)];
     }
     // A blown-up world only gets slower (tens of thousands of candidates);
     // the row says so instead of timing it.
@@ -128,6 +129,8 @@ void bench_contact() {
       // Runs are deterministic: a second one differs only in time, and the
       // faster of the two is the one less disturbed by the machine.
       const Row again = run_scene(scene.desc, methods[m], start, scene.steps);
+      RECOIL_CHECK(again.steps == rows[m].steps && again.iterations == rows[m].iterations,
+                   scene.name << ": two runs of " << sim::to_string(methods[m]) << " differ");
       rows[m].step_ms = std::min(rows[m].step_ms, again.step_ms);
       rows[m].solve_ms = std::min(rows[m].solve_ms, again.solve_ms);
       const std::string steps = std::to_string(rows[m].steps) + " (" + std::to_string(scene.warmup) + ")" +

@@ -143,9 +143,9 @@ TEST(SolverConvergence, KrylovStartsAccountForEveryRestartAndIteration) {
       std::cout << describe(params) << ", " << to_string(method) << ":";
       for (int c = 0; c < kKrylovStarts; ++c) {
         starts += s.stats.starts[static_cast<size_t>(c)];
-        iterations += s.stats.iterations_after[static_cast<size_t>(c)];
+        iterations += s.stats.start_iterations[static_cast<size_t>(c)];
         std::cout << " " << to_string(static_cast<KrylovStart>(c)) << " " << s.stats.starts[static_cast<size_t>(c)] << " ("
-                  << s.stats.iterations_after[static_cast<size_t>(c)] << " it)";
+                  << s.stats.start_iterations[static_cast<size_t>(c)] << " it)";
       }
       std::cout << "\n";
       EXPECT_EQ(s.stats.starts[static_cast<size_t>(KrylovStart::first_solve)], 1);
