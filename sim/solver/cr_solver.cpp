@@ -10,6 +10,7 @@
 #include "core/check.h"
 #include "sim/solver/block_ssor.h"
 #include "sim/solver/constraint_evaluation.h"
+#include "sim/solver/cr_hand_back.h"
 #include "sim/solver/contact_rows_ops.h"
 #include "sim/solver/kkt_residual.h"
 
@@ -26,13 +27,6 @@ constexpr double kBreakdown = 1e-12;
 // in a slow eigen-direction (|B C^-1 r| ~ lambda_min |r|, lambda_min ~ 1e-3
 // for stiff FEM), so it must also be this small relative to |r|.
 constexpr double kStationary = 1e-6;
-
-// Copies an active contact k's multipliers out of y = [dv (n); f] into s:
-// lambda, and gamma when sticking (zero otherwise).
-void take_multipliers(const Eigen::VectorXd& y, int n, int k, ContactState& s) {
-  s.lambda = y[n + 3 * k];
-  s.gamma = s.mode == ContactMode::sticking ? Eigen::Vector2d(y.segment<2>(n + 3 * k + 1)) : Eigen::Vector2d::Zero();
-}
 
 class CrSolver {
  public:
@@ -74,7 +68,6 @@ class CrSolver {
   enum class Finish { converged, not_converged, go_on };
   Finish finish_or_continue();
   bool step();
-  double frozen_violation(int k, const Eigen::VectorXd& dv) const;
   double kkt_of(const Eigen::VectorXd& y, const std::vector<ContactState>& states);
   double remember_if_best();
   void remeasure_best();
@@ -470,24 +463,6 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   return Finish::go_on;
 }
 
-// How far (m/s) an active contact's multipliers and velocity are from its
-// mode's law: a pull, a sticking impulse outside the cone, a slip running
-// backwards against the kinetic impulse.
-double CrSolver::frozen_violation(int k, const Eigen::VectorXd& dv) const {
-  const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
-  const ContactState& s = m_problem.states[static_cast<size_t>(k)];
-  const ContactTrack& track = m_tracks[static_cast<size_t>(k)];
-  const double w_t = std::max(track.w[1], track.w[2]);
-  double violation = -s.lambda * track.w[0];
-  if (s.mode == ContactMode::sticking)
-    violation = std::max(violation, (s.gamma.norm() - rows.mu_static * std::max(s.lambda, 0.0)) * w_t);
-  if (s.mode == ContactMode::sliding) {
-    const Eigen::Vector2d u = rows_times(rows, dv).tail<2>() - rows.rhs_tangent;
-    violation = std::max(violation, -u.dot(s.slip));
-  }
-  return violation;
-}
-
 // The KKT residual (kkt_residual.h) of iterate y (#DoF + 3 #contacts) with
 // the friction states `states` (as many as the problem has contacts, or
 // fewer: contacts added since count as inactive), on the current rows.
@@ -571,33 +546,7 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   double constraint_inf = 0.0;
   m_stats.residual = residual_norm(constraint_inf);
   dv = m_y.head(m_n);
-  const int max_flips = m_settings.max_flips;
-  for (int k = 0; k < contacts(); ++k) {
-    ContactState& s = m_problem.states[static_cast<size_t>(k)];
-    const ContactTrack& track = m_tracks[static_cast<size_t>(k)];
-    if (s.mode == ContactMode::inactive) {
-      s = ContactState{};
-      // Let go for pulling while frozen, and penetrating now: not a solution.
-      const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
-      if (track.locked_off && rows_times(rows, dv)[0] - rows.rhs_normal < -m_settings.constraint_tolerance)
-        m_stats.converged = false;
-      continue;
-    }
-    take_multipliers(m_y, m_n, k, s);
-    // Frozen (stats.frozen counts the active ones, as contact_problem.h
-    // says). One that kept a mode its own law rejects (pulling, sticking
-    // outside the cone, sliding backwards) is not a solution: say so.
-    if (track.flips >= max_flips) {
-      ++m_stats.frozen;
-      if (frozen_violation(k, dv) > m_settings.constraint_tolerance) m_stats.converged = false;
-    }
-    if (s.mode == ContactMode::sticking) {
-      ++m_stats.sticking;
-    } else {
-      ++m_stats.sliding;
-    }
-    ++m_stats.active;
-  }
+  hand_back_states(m_problem, m_tracks, m_y, m_settings, m_stats);
 }
 
 }  // namespace
