@@ -64,6 +64,8 @@ void add_run_options(CLI::App& command, RunOptions& options) {
   command.add_option("--stats", options.stats, "Write the per-frame statistics here (default: DIR/stats.jsonl)");
   command.add_option("--video", options.video, "Also encode the frames to this video (needs ffmpeg)");
   command.add_flag("--resume", options.resume, "Skip frames already on disk (the simulation still runs)");
+  command.add_flag("--strict", options.strict,
+                   "Fail (exit 3) when a contact solve did not converge; the frames and run.json are still written");
   command.add_option("--threads", options.threads, "Threads for collision queries (default: all cores)")
       ->check(CLI::Range(1, 1024));
   add_render_options(command, options.render);
@@ -86,16 +88,27 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
   job.video = options.video;
   job.render = !options.no_render;
   job.resume = options.resume;
+  job.strict = options.strict;
   job.command = command_line;
   job.scene = std::move(scene);
   const RunResult result = run_scene(job, global);
-  if (!global.quiet) {
+  // The summary line: always when it carries a warning, which -q never hides.
+  const std::string warnings = describe_warnings(result.quality);
+  if (global.log_json) {
+    const nlohmann::json line = {{"event", "summary"},       {"scene", job.scene.name},
+                                 {"steps", result.steps},     {"frames_written", result.frames_written},
+                                 {"frames_skipped", result.frames_skipped}, {"output", job.output_dir.string()},
+                                 {"warnings", warnings}};
+    std::cerr << line.dump() << "\n";
+  } else if (!global.quiet || !warnings.empty()) {
     std::cerr << "recoil: " << job.scene.name << ": " << result.steps << " steps";
     if (job.render) {
       std::cerr << ", wrote " << result.frames_written << " frames";
       if (result.frames_skipped > 0) std::cerr << " (" << result.frames_skipped << " already on disk)";
     }
-    std::cerr << " to " << job.output_dir.string() << "\n";
+    std::cerr << " to " << job.output_dir.string();
+    if (!warnings.empty()) std::cerr << "; warning: " << warnings;
+    std::cerr << "\n";
   }
   return 0;
 }

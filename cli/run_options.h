@@ -20,6 +20,7 @@ struct RunOptions {
   std::string stats;
   std::string video;
   bool resume = false;
+  bool strict = false;     // an unconverged solve is exit 3
   int threads = 0;         // 0: the machine's cores
   RenderOptions render;    // render options; only those given override the scene
   CLI::App* command = nullptr;  // to ask which render options were given

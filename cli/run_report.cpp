@@ -55,6 +55,12 @@ void RunReport::finish(const sim::World& world, const RunResult& result, double 
               {"inverted_steps", c.inverted_steps},
               {"nan_steps", c.nan_steps},
               {"energy_blowup_steps", c.energy_blowup_steps}}},
+            {"warnings",
+             {{"summary", describe_warnings(result.quality)},
+              {"not_converged_steps", result.quality.not_converged},
+              {"worst_kkt", result.quality.worst_kkt},
+              {"max_penetration", result.quality.max_penetration},
+              {"margin", result.quality.margin}}},
             {"exit", {{"code", result.failed ? 3 : 0}, {"status", result.failed ? "sim_failed" : "ok"},
                       {"message", result.message}}}};
 }

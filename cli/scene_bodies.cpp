@@ -185,7 +185,7 @@ Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir, MeshFi
   return g;
 }
 
-void parse_material(const JsonCursor& c, double length, sim::Material& m) {
+void parse_material(const JsonCursor& c, sim::Material& m) {
   c.expect_object({"model", "youngs_modulus", "poisson_ratio", "density", "damping"});
   const std::string model = c.string_or("model", "corotated");
   if (model == "corotated") m.model = sim::MaterialModel::corotated;
@@ -198,24 +198,12 @@ void parse_material(const JsonCursor& c, double length, sim::Material& m) {
   m.youngs_modulus = field("youngs_modulus", 1e5, 0.0, INFINITY, true, false);
   m.poisson_ratio = field("poisson_ratio", 0.3, 0.0, 0.5, false, true);
   m.density = field("density", 1000.0, 0.0, INFINITY, true, false);
-  const double damping = field("damping", 0.0, 0.0, 10.0, false, false);
-  rayleigh_from_damping(damping, m.youngs_modulus, m.density, length, m.damping_alpha, m.damping_beta);
+  m.damping_ratio = field("damping", 0.0, 0.0, 10.0, false, false);
 }
 
 render::Rgb parse_body_color(const JsonCursor& c) {
   return parse_color(c.string(), c.file() + ": " + c.pointer());
 }
-
-}  // namespace
-
-void rayleigh_from_damping(double zeta, double youngs_modulus, double density, double length, double& alpha,
-                           double& beta) {
-  const double omega0 = std::numbers::pi / std::max(length, 1e-6) * std::sqrt(youngs_modulus / density);
-  alpha = zeta * omega0;
-  beta = zeta / omega0;
-}
-
-namespace {
 
 void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, MeshFiles& files, SceneDesc& scene) {
   body.expect_object(kAllBodyKeys);
@@ -267,9 +255,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     d.transform = transform;
     d.static_friction = friction.static_coefficient;
     d.kinetic_friction = friction.kinetic_coefficient;
-    const sim::Aabb box = sim::bounding_box(geometry.surface);
-    const double length = (box.extent().cwiseProduct(transform.scale.cwiseAbs())).maxCoeff();
-    parse_material(body.child_or_empty("material"), length, d.material);
+    parse_material(body.child_or_empty("material"), d.material);
     d.velocity = body.vec3_or("velocity", Eigen::Vector3d::Zero());
     d.self_contact = body.boolean_or("self_contact", true);
     // A tetrahedral mesh file gives the tets; its boundary is the surface.

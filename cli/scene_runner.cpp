@@ -77,6 +77,18 @@ std::string describe_failure(const sim::StepReport& r, int frame, const std::str
 
 }  // namespace
 
+std::string describe_warnings(const SolveQuality& q) {
+  std::ostringstream s;
+  s.precision(2);
+  if (q.not_converged > 0)
+    s << q.not_converged << " of " << q.steps << " solves did not converge (worst KKT residual " << std::scientific
+      << q.worst_kkt << std::defaultfloat << " m/s)";
+  if (q.penetrated_margin())
+    s << (q.not_converged > 0 ? "; " : "") << "largest penetration " << std::fixed << q.max_penetration * 1e3
+      << " mm, beyond the " << q.margin * 1e3 << " mm contact margin";
+  return s.str();
+}
+
 long frame_step(int frame, double fps, double dt) { return std::lround((frame - 1) / (fps * dt)); }
 
 RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
@@ -126,6 +138,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
 
   Progress progress(global, "run", static_cast<int>(selected.size()));
   RunResult result;
+  result.quality.margin = scene.world.contact.margin;
   size_t next = 0;  // index into selected
   long inverted_steps = 0;
   const long grace_steps = std::max(1L, static_cast<long>(std::ceil(kInversionGrace / dt)));
@@ -138,6 +151,10 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       const sim::StepReport r = world->step();
       acc.add(r);
       report.add_step(r);
+      ++result.quality.steps;
+      if (!r.solver_converged) ++result.quality.not_converged;
+      result.quality.worst_kkt = std::max(result.quality.worst_kkt, r.solver_kkt);
+      result.quality.max_penetration = std::max(result.quality.max_penetration, r.max_penetration);
       if (r.status == sim::StepStatus::inverted) ++inverted_steps;
       else if (r.status == sim::StepStatus::ok) inverted_steps = 0;
       if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup) {
@@ -185,6 +202,11 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   if (video && !result.failed) video->finish();
   report.timings.encode = writer ? writer->encode_ms() : 0.0;
   result.steps = world->counters().steps;
+  if (job.strict && !result.failed && result.quality.not_converged > 0) {
+    result.failed = true;
+    result.message = scene_error(Error(ErrorKind::sim_failed, "--strict: " + describe_warnings(result.quality)), scene)
+                         .what();
+  }
   report.finish(*world, result, ms_since(start));
   write_text_atomically(job.output_dir / "run.json", report.json().dump(2) + "\n");
   if (result.failed) throw Error(ErrorKind::sim_failed, result.message);

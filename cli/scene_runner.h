@@ -22,8 +22,25 @@ struct RunJob {
   std::filesystem::path video;            // empty: no video
   bool render = true;
   bool resume = false;                    // keep frames already on disk
+  bool strict = false;                    // a solve that did not converge fails the run (exit 3)
   std::string command;                    // the command line, for run.json
 };
+
+// How well the contact solves went over a run: what the end-of-run summary
+// warns about and --strict fails on.
+struct SolveQuality {
+  long steps = 0;
+  long not_converged = 0;          // steps whose solve stopped at its iteration cap
+  double worst_kkt = 0.0;          // largest KKT residual of a returned solution, m/s
+  double max_penetration = 0.0;    // m
+  double margin = 0.0;             // the scene's contact margin, m
+  bool penetrated_margin() const { return max_penetration > margin; }
+  bool clean() const { return not_converged == 0 && !penetrated_margin(); }
+};
+
+// "12 of 750 solves did not converge (worst KKT residual 3.1e-04 m/s); ..."
+// naming every warning, or empty when there is none.
+std::string describe_warnings(const SolveQuality& quality);
 
 struct RunResult {
   int frames_written = 0;
@@ -31,11 +48,13 @@ struct RunResult {
   long steps = 0;
   bool failed = false;
   std::string message;      // what failed
+  SolveQuality quality;
 };
 
 // Writes scene.json first, then frames, stats and run.json into job.output_dir
-// (created). A failed simulation throws Error(sim_failed) naming the frame and
-// the body after the frames so far are on disk and run.json records it.
+// (created). A failed simulation (or, with job.strict, an unconverged solve)
+// throws Error(sim_failed) after the frames so far are on disk and run.json
+// records it; the message names the scene file, the frame and the body.
 RunResult run_scene(const RunJob& job, const GlobalOptions& global);
 
 // World errors name "bodies/i", "rigid_bodies/i" or "planes/i" by index in

@@ -4,7 +4,6 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <limits>
-#include <Eigen/LU>
 
 #include "core/check.h"
 
@@ -40,7 +39,7 @@ Vector12d gather(const DeformableBody& body, int t, const Eigen::VectorXd& globa
 double assemble_body(const DeformableBody& body, const Eigen::VectorXd& x, const Eigen::VectorXd& v, double h,
                      const Eigen::Vector3d& gravity, BlockSparseMatrix& A, Eigen::VectorXd& b) {
   RECOIL_CHECK(body.block_index.size() == static_cast<size_t>(body.rest.num_tets()));
-  const double alpha = body.material.damping_alpha, beta = body.material.damping_beta;
+  const double beta = body.damping_beta;
   const double k_scale = h * beta + h * h;
   double energy = 0.0;
   for (int t = 0; t < body.rest.num_tets(); ++t) {
@@ -58,8 +57,8 @@ double assemble_body(const DeformableBody& body, const Eigen::VectorXd& x, const
   for (int i = 0; i < body.num_nodes; ++i) {
     const int node = body.node_offset + i;
     const double m = body.mass[i];
-    A.block(A.find(node, node)).diagonal().array() += (1.0 + h * alpha) * m;
-    b.segment<3>(3 * node) += h * m * (gravity - alpha * v.segment<3>(3 * node));
+    A.block(A.find(node, node)).diagonal().array() += m;
+    b.segment<3>(3 * node) += h * m * gravity;
     if (body.pinned[static_cast<size_t>(i)]) b.segment<3>(3 * node).setZero();
   }
   return energy;

@@ -1,11 +1,11 @@
 #pragma once
-// Assembly of the implicit-Euler system of METHOD.md section 1 for the
-// deformable bodies, one linearisation per step:
-//   A = (1 + h alpha) M + (h beta + h^2) K,
-//   b = h (f_el(x) + M g - alpha M v) - h (beta + h) K v,
+// Assembly of the implicit-Euler system for the deformable bodies, one
+// linearisation per step, with stiffness-proportional damping D = beta K:
+//   A = M + (h beta + h^2) K,
+//   b = h (f_el(x) + M g) - h (beta + h) K v,
 // with K the (projected) elastic Hessian, so that A dv = b, v += dv, x += h v.
-// (METHOD.md writes b = h (f + h K v + f_ext) with K = df/dx; ours is the
-// Hessian d2E/dx2 = -df/dx, hence the minus sign; f there includes -D v.)
+// K annihilates translations, and rotations of an unstressed body, so the
+// damping force -beta K v acts on deformation only (docs/decisions/damping).
 #include <Eigen/Core>
 #include <utility>
 #include <vector>

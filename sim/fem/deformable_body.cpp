@@ -5,6 +5,7 @@
 
 #include "core/error.h"
 #include "sim/collision/embree_scene.h"
+#include "sim/fem/vibration_modes.h"
 #include "sim/geometry/boundary.h"
 #include "sim/geometry/mesh_stats.h"
 #include "sim/geometry/tetrahedralize.h"
@@ -91,6 +92,12 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
       body.pinned[static_cast<size_t>(i)] =
           (p.array() >= desc.pinned->min.array()).all() && (p.array() <= desc.pinned->max.array()).all();
     }
+  }
+  if (desc.material.damping_ratio > 0.0) {
+    const VibrationMode mode = lowest_vibration_mode(
+        {&body.rest, &body.elements, desc.material.model, body.lame, &body.mass, &body.pinned});
+    body.lowest_frequency = mode.omega;
+    if (mode.omega > 0.0) body.damping_beta = 2.0 * desc.material.damping_ratio / mode.omega;
   }
   return body;
 }

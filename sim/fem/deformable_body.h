@@ -57,6 +57,10 @@ struct DeformableBody {
   std::vector<ElementRest> elements;
   Material material;
   Lame lame;
+  // Stiffness-proportional damping D = beta K, s: beta = 2 zeta / omega_1 gives
+  // the lowest mode omega_1 the ratio zeta (mode i gets zeta omega_i / omega_1).
+  double damping_beta = 0.0;
+  double lowest_frequency = 0.0;  // omega_1, rad/s; computed only for a damped body
   Eigen::VectorXd mass;          // #nodes lumped masses, kg
   std::vector<char> pinned;      // #nodes
   double surface_volume = 0.0;   // m^3 enclosed by the surface (mass = density * this)

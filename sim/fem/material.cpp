@@ -16,9 +16,7 @@ void validate(const Material& m, const std::string& where) {
     fail("youngs_modulus", "must be > 0", m.youngs_modulus);
   if (!(m.poisson_ratio >= 0.0 && m.poisson_ratio < 0.5)) fail("poisson_ratio", "must be in [0, 0.5)", m.poisson_ratio);
   if (!(m.density > 0.0) || !std::isfinite(m.density)) fail("density", "must be > 0", m.density);
-  if (!(m.damping_alpha >= 0.0) || !std::isfinite(m.damping_alpha))
-    fail("damping_alpha", "must be >= 0", m.damping_alpha);
-  if (!(m.damping_beta >= 0.0) || !std::isfinite(m.damping_beta)) fail("damping_beta", "must be >= 0", m.damping_beta);
+  if (!(m.damping_ratio >= 0.0) || !std::isfinite(m.damping_ratio)) fail("damping", "must be >= 0", m.damping_ratio);
 }
 
 Lame lame_parameters(double e, double nu) {

@@ -13,8 +13,9 @@ struct Material {
   double youngs_modulus = 1e5;  // E, Pa
   double poisson_ratio = 0.3;   // nu, in [0, 0.5)
   double density = 1000.0;      // rho, kg/m^3
-  double damping_alpha = 0.0;   // Rayleigh mass term, 1/s   (D = alpha M + beta K)
-  double damping_beta = 0.0;    // Rayleigh stiffness term, s
+  // Damping ratio zeta of the body's lowest vibration mode, dimensionless. It is
+  // stiffness-proportional (D = beta K), so rigid motion is never damped.
+  double damping_ratio = 0.0;
 };
 
 // Throws bad_input naming `where` (e.g. "bodies/1/material") and the field.

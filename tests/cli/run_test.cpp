@@ -191,6 +191,42 @@ TEST(RunCommand, DivergingSceneExits3NamingFrameAndBodyAndKeepsEarlierFrames) {
   for (const auto& e : fs::directory_iterator(out)) EXPECT_EQ(e.path().string().find(".tmp"), std::string::npos) << e.path();
 }
 
+// A solve capped at 2 iterations cannot converge once the box lands: the run
+// still succeeds, but its summary says so (even with -q), run.json records it,
+// and --strict makes it exit 3 with every output written.
+TEST(RunCommand, UnconvergedSolvesAreReportedAndStrictFailsOnThem) {
+  const fs::path dir = scratch_dir("run_strict");
+  const fs::path scene = dir / "capped.json";
+  std::ofstream(scene) << R"({"recoil": 1, "name": "capped",
+    "simulation": {"dt": 0.01, "duration": 0.3, "solver": {"max_iterations": 2}},
+    "bodies": [{"type": "plane"},
+               {"name": "box", "type": "rigid", "primitive": {"box": [0.2, 0.2, 0.2]}, "transform": {"position": [0, 0.11, 0]}}],
+    "render": {"fps": 10, "resolution": [32, 32], "msaa": 0}})";
+  const CommandResult lenient = run_recoil("run " + shell_quote(scene) + " -q --no-render -o " + shell_quote(dir / "lenient"));
+  EXPECT_EQ(lenient.exit_code, 0) << lenient.err;
+  EXPECT_NE(lenient.err.find("warning: "), std::string::npos) << lenient.err;
+  EXPECT_NE(lenient.err.find(" solves did not converge (worst KKT residual "), std::string::npos) << lenient.err;
+  const json run = json::parse(file_bytes(dir / "lenient" / "run.json"));
+  EXPECT_GT(run["warnings"]["not_converged_steps"].get<int>(), 0);
+  EXPECT_GT(run["warnings"]["worst_kkt"].get<double>(), 0.0);
+  EXPECT_EQ(run["exit"]["code"], 0);
+
+  const fs::path out = dir / "strict";
+  const CommandResult strict = run_recoil("run " + shell_quote(scene) + " -q --strict -o " + shell_quote(out));
+  std::cout << strict.err;
+  EXPECT_EQ(strict.exit_code, 3) << strict.err;
+  EXPECT_NE(strict.err.find("recoil: error: " + scene.string() + ": --strict: "), std::string::npos) << strict.err;
+  EXPECT_EQ(count_pngs(out), 4);
+  EXPECT_EQ(read_stats(out / "stats.jsonl").size(), 4u);
+  EXPECT_EQ(json::parse(file_bytes(out / "run.json"))["exit"]["code"], 3);
+
+  // A scene whose solves all converge has no warning to give.
+  const CommandResult clean = run_recoil("run " + shell_quote(source_path("assets/scenes/validation/slide-to-stop.json")) +
+                                         " -q --strict --frames 1-3 --no-render -o " + shell_quote(dir / "clean"));
+  EXPECT_EQ(clean.exit_code, 0) << clean.err;
+  EXPECT_EQ(clean.err, "");
+}
+
 TEST(DropCommand, SeededPileReproducesAndSavesASceneRunAccepts) {
   const fs::path a = scratch_dir("drop_a"), b = scratch_dir("drop_b");
   const fs::path bunny = source_path("assets/meshes/bunny.obj");

@@ -91,19 +91,6 @@ TEST(SceneFile, ScalarAndVectorScaleFrictionFormsAndPrimitives) {
   EXPECT_NE(scene.bodies[0].color, scene.bodies[1].color);
 }
 
-TEST(SceneFile, DampingMapsToRayleighWithTheGivenRatioAtTheFundamentalFrequency) {
-  const double zeta = 0.05, E = 1e5, rho = 1000, L = 0.3;
-  double alpha = 0, beta = 0;
-  cli::rayleigh_from_damping(zeta, E, rho, L, alpha, beta);
-  const double omega0 = std::numbers::pi / L * std::sqrt(E / rho);
-  const double ratio = alpha / (2 * omega0) + beta * omega0 / 2;
-  std::cout << "omega0 " << omega0 << " rad/s, alpha " << alpha << " 1/s, beta " << beta << " s, ratio " << ratio << "\n";
-  EXPECT_NEAR(ratio, zeta, 1e-12);
-  cli::rayleigh_from_damping(0.0, E, rho, L, alpha, beta);
-  EXPECT_EQ(alpha, 0.0);
-  EXPECT_EQ(beta, 0.0);
-}
-
 TEST(SceneFile, NearMissSuggestions) {
   EXPECT_EQ(cli::near_miss("youngs_modulos", {"model", "youngs_modulus", "density"}), "youngs_modulus");
   EXPECT_EQ(cli::near_miss("frction", {"friction", "transform"}), "friction");

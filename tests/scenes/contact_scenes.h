@@ -56,8 +56,7 @@ inline Material jelly(double youngs_modulus = 2e4, double density = 1000.0) {
   m.youngs_modulus = youngs_modulus;
   m.poisson_ratio = 0.3;
   m.density = density;
-  m.damping_alpha = 0.0;
-  m.damping_beta = 0.01;
+  m.damping_ratio = 1.0;  // critically damped lowest mode: the scenes settle
   return m;
 }
 

@@ -51,7 +51,7 @@ TEST(ContactValidation, UndampedBallNeverGainsEnergy) {
   WorldDesc w = base_world(dt);
   w.planes.push_back(ground(friction(0.0, 0.0)));
   Material m = jelly(1e5);
-  m.damping_beta = 0.0;
+  m.damping_ratio = 0.0;
   w.bodies.push_back(soft_sphere("ball", radius, 3, m, {0.0, radius + 0.1, 0.0}, friction(0.0, 0.0)));
   World world(w);
   const double e0 = total_energy(world, w.gravity);
@@ -141,8 +141,7 @@ TEST(ContactValidation, SoftCubeSettlesWithEverySolveConverged) {
   w.planes.push_back(ground(friction(0.6, 0.6)));
   Material m = jelly(2e4);
   m.poisson_ratio = 0.45;
-  m.damping_alpha = 3.51;    // 1/s: zeta omega_0, omega_0 = (pi / size) sqrt(E / rho) = 70.2 rad/s
-  m.damping_beta = 7.12e-4;  // s: zeta / omega_0
+  m.damping_ratio = 0.05;
   w.bodies.push_back(soft_box("jelly", Eigen::Vector3d::Constant(size), 5, m, {0.0, 0.11, 0.0}, friction(0.6, 0.6)));
   World world(w);
   int unconverged = 0, most_restarts = 0, sliding = 0;

@@ -16,8 +16,7 @@ TEST(System, BlockSparseMatchesEigenAndPcgMatchesDirectSolve) {
   WorldDesc desc;
   desc.dt = 0.01;
   Material m = test_scenes::soft_material(MaterialModel::neo_hookean);
-  m.damping_alpha = 0.1;
-  m.damping_beta = 0.01;
+  m.damping_ratio = 0.2;
   desc.bodies.push_back(test_scenes::box_body({0.3, 0.1, 0.1}, 6, m));
   desc.bodies.back().pinned = PinBox{Eigen::Vector3d(-1, -1, -1), Eigen::Vector3d(-0.149, 1, 1)};
   World world(desc);
