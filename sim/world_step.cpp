@@ -90,6 +90,7 @@ std::vector<ContactSurface> World::contact_surfaces() const {
     s.mu_static = m_mu_static[i];
     s.mu_kinetic = m_mu_kinetic[i];
     s.self_contact = m_self_contact[i] != 0;
+    s.rest = &body.surface.vertices;
     s.triangles = body.surface.triangles;
     s.embedding = &body.embedding;
     s.tets = &body.rest.tets;

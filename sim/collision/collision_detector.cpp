@@ -18,7 +18,8 @@ struct CollisionDetector::Impl {
     std::vector<std::array<int, 2>> edges;          // unique_edges(triangles)
     std::vector<std::array<int, 2>> edge_opposite;  // edge_opposites(triangles, edges)
     std::unique_ptr<TriangleScene> faces;
-    std::unique_ptr<BoxScene> edge_boxes;  // keyed by the edges' vertices for self queries
+    std::unique_ptr<BoxScene> edge_boxes;       // padded by the edges' motion, against other surfaces
+    std::unique_ptr<BoxScene> self_edge_boxes;  // padded by their deformation motion, keyed by their vertices
   };
   EmbreeDevice device;
   std::vector<SurfaceScenes> scenes;
@@ -53,12 +54,18 @@ void parallel_chunks(size_t n, int threads, const Chunk& work, std::vector<Conta
   for (auto& part : parts) out.insert(out.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
 }
 
-std::vector<Aabb> edge_boxes(const PreparedSurface& s, double margin) {
+// Each edge's x0 box padded by margin/2 plus its motion: against another
+// surface its absolute motion, against its own surface its deformation
+// motion (PreparedSurface), the larger of its two vertices'.
+std::vector<Aabb> edge_boxes(const PreparedSurface& s, double margin, bool self) {
   std::vector<Aabb> boxes(s.edges.size());
   for (size_t e = 0; e < s.edges.size(); ++e) {
     const Eigen::Vector3d p = s.surface->x0.row(s.edges[e][0]).transpose();
     const Eigen::Vector3d q = s.surface->x0.row(s.edges[e][1]).transpose();
-    const Eigen::Vector3d pad = Eigen::Vector3d::Constant(0.5 * margin + s.edge_motion[e]);
+    const double motion = self ? std::max(s.deformation_motion[static_cast<size_t>(s.edges[e][0])],
+                                          s.deformation_motion[static_cast<size_t>(s.edges[e][1])])
+                               : s.edge_motion[e];
+    const Eigen::Vector3d pad = Eigen::Vector3d::Constant(0.5 * margin + motion);
     boxes[e].min = p.cwiseMin(q) - pad;
     boxes[e].max = p.cwiseMax(q) + pad;
   }
@@ -104,11 +111,14 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
       sc.triangles = s.triangles;
       sc.faces = std::make_unique<TriangleScene>(m_impl->device, s.x0, s.triangles, /*dynamic=*/true);
       sc.edge_boxes = std::make_unique<BoxScene>(m_impl->device);
+      sc.self_edge_boxes.reset();
       ++m_stats.rebuilt_surfaces;
     }
-    sc.edge_boxes->set_boxes(edge_boxes(prepared[i], margin), self_interacts(prepared[i])
-                                                                  ? sc.edges
-                                                                  : std::vector<std::array<int, 2>>{});
+    sc.edge_boxes->set_boxes(edge_boxes(prepared[i], margin, false), {});
+    if (self_interacts(prepared[i])) {
+      if (!sc.self_edge_boxes) sc.self_edge_boxes = std::make_unique<BoxScene>(m_impl->device);
+      sc.self_edge_boxes->set_boxes(edge_boxes(prepared[i], margin, true), sc.edges);
+    }
   }
 
   std::vector<ContactCandidate> out;
@@ -123,7 +133,9 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
                         near.clear();
                         const int vi = static_cast<int>(v);
                         const Eigen::Vector3d p = a.surface->x0.row(vi).transpose();
-                        const double radius = margin + a.vertex_motion[v] + b.max_motion;
+                        const double radius = a.index == b.index
+                                                  ? margin + a.deformation_motion[v] + a.max_deformation_motion
+                                                  : margin + a.vertex_motion[v] + b.max_motion;
                         // Farther than `radius` from all of B (its box) is never a candidate.
                         const Eigen::Vector3d outside =
                             (b.box0.min - p).cwiseMax(p - b.box0.max).cwiseMax(0.0);
@@ -140,9 +152,12 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
   auto edges_against_edges = [&](const PreparedSurface& a, const PreparedSurface& b) {
     const Impl::SurfaceScenes& sa = m_impl->scenes[a.index];
     const Impl::SurfaceScenes& sb = m_impl->scenes[b.index];
-    if (!sa.edge_boxes || !sb.edge_boxes) return;
+    const bool self = a.index == b.index;
+    const BoxScene* boxes_a = self ? sa.self_edge_boxes.get() : sa.edge_boxes.get();
+    const BoxScene* boxes_b = self ? sb.self_edge_boxes.get() : sb.edge_boxes.get();
+    if (!boxes_a || !boxes_b) return;
     // Self: each unordered pair once, (lo, hi), as test_edge_edge requires.
-    const std::vector<std::pair<int, int>> pairs = sa.edge_boxes->overlapping_pairs(*sb.edge_boxes);
+    const std::vector<std::pair<int, int>> pairs = boxes_a->overlapping_pairs(*boxes_b);
     m_stats.edge_edge_pairs += static_cast<long long>(pairs.size());
     parallel_chunks(pairs.size(), threads,
                     [&](size_t begin, size_t end, std::vector<ContactCandidate>& part) {

@@ -27,6 +27,11 @@ struct CollisionSurface {
   Points x1;               // #V by 3, predicted positions at the end of the step (m)
   Triangles triangles;     // #F by 3, indices into x0/x1, counter-clockwise from outside
   bool self_contact = false;  // only honoured for deformable surfaces
+  // #V by 3, the rest shape (m); required with self_contact. Two primitives of
+  // the surface within the margin of each other at rest are never a contact:
+  // that closeness is modelled (neighbouring triangles, a narrow gap), and
+  // the elasticity, not a constraint, keeps it.
+  const Points* rest = nullptr;
 };
 
 // An infinite static plane: points x with normal.(x - point) >= 0 are outside.

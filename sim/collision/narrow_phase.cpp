@@ -173,6 +173,9 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   const int nv = static_cast<int>(surface.x0.rows());
   RECOIL_CHECK(surface.x1.rows() == nv, "surface " << index << ": x0 has " << nv << " rows, x1 " << surface.x1.rows());
   RECOIL_CHECK(surface.x0.allFinite() && surface.x1.allFinite(), "surface " << index << " has non-finite positions");
+  RECOIL_CHECK(!(surface.self_contact && surface.kind == SurfaceKind::deformable) ||
+                   (surface.rest != nullptr && surface.rest->rows() == nv),
+               "surface " << index << ": self-contact needs the rest shape (#V rows)");
   out.vertex_motion.resize(static_cast<size_t>(nv));
   for (int v = 0; v < nv; ++v) {
     out.box0.extend(row(surface.x0, v));
@@ -181,6 +184,14 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   }
   if (nv > 0)
     out.length_scale = std::max(surface.x0.cwiseAbs().maxCoeff(), surface.x1.cwiseAbs().maxCoeff());
+  if (nv > 0 && self_interacts(out)) {
+    const Eigen::Vector3d mean = (surface.x1 - surface.x0).colwise().mean().transpose();
+    out.deformation_motion.resize(static_cast<size_t>(nv));
+    for (int v = 0; v < nv; ++v) {
+      out.deformation_motion[v] = (row(surface.x1, v) - row(surface.x0, v) - mean).norm();
+      out.max_deformation_motion = std::max(out.max_deformation_motion, out.deformation_motion[v]);
+    }
+  }
   const int nf = static_cast<int>(surface.triangles.rows());
   out.triangle_motion.resize(static_cast<size_t>(nf));
   for (int f = 0; f < nf; ++f) {
@@ -214,6 +225,26 @@ bool surfaces_interact(const PreparedSurface& a, const PreparedSurface& b) {
 bool self_interacts(const PreparedSurface& a) {
   return a.surface->kind == SurfaceKind::deformable && a.surface->self_contact;
 }
+
+namespace {
+
+// The self-contact rule (collision_types.h): primitives of one surface that
+// lie within the margin of each other in the rest shape are never a contact.
+bool close_at_rest(const PreparedSurface& s, int vertex, const std::array<int, 3>& triangle, double margin) {
+  const Points& rest = *s.surface->rest;
+  const Eigen::Vector3d p = row(rest, vertex);
+  const TriangleClosestPoint q = closest_point_on_triangle(p, row(rest, triangle[0]), row(rest, triangle[1]),
+                                                           row(rest, triangle[2]));
+  return (p - q.point).norm() <= margin;
+}
+bool close_at_rest(const PreparedSurface& s, const std::array<int, 2>& e, const std::array<int, 2>& f, double margin) {
+  const Points& rest = *s.surface->rest;
+  const Eigen::Vector3d a0 = row(rest, e[0]), a1 = row(rest, e[1]), b0 = row(rest, f[0]), b1 = row(rest, f[1]);
+  const SegmentClosestPoints c = closest_points_on_segments(a0, a1, b0, b1);
+  return ((a0 + c.s * (a1 - a0)) - (b0 + c.t * (b1 - b0))).norm() <= margin;
+}
+
+}  // namespace
 bool interacts_with_planes(const PreparedSurface& a) { return !is_prescribed(a.surface->kind); }
 
 std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, int vertex, const PreparedSurface& b,
@@ -221,7 +252,6 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const CollisionSurface& sa = *a.surface;
   const CollisionSurface& sb = *b.surface;
   const std::array<int, 3> tv = {sb.triangles(triangle, 0), sb.triangles(triangle, 1), sb.triangles(triangle, 2)};
-  if (a.index == b.index && (tv[0] == vertex || tv[1] == vertex || tv[2] == vertex)) return std::nullopt;
 
   const Eigen::Vector3d p0 = row(sa.x0, vertex), p1 = row(sa.x1, vertex);
   std::array<Eigen::Vector3d, 3> t0, t1;
@@ -235,6 +265,7 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   double relative = 0.0;  // narrow_phase.h: how far p moves with respect to any point of the triangle
   for (int k = 0; k < 3; ++k) relative = std::max(relative, ((p1 - p0) - (t1[k] - t0[k])).norm());
   if (!(distance <= margin + relative)) return std::nullopt;
+  if (a.index == b.index && close_at_rest(a, vertex, tv, margin)) return std::nullopt;
   // The same bound from the end of the step (narrow_phase.h).
   if (relative > 0.0) {
     const Eigen::Vector3d end = closest_point_on_triangle(p1, t1[0], t1[1], t1[2]).point;
@@ -297,10 +328,7 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
 std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edge_a, const PreparedSurface& b,
                                                int edge_b, double margin) {
   const std::array<int, 2> ea = a.edges[edge_a], eb = b.edges[edge_b];
-  if (a.index == b.index) {
-    RECOIL_CHECK(edge_a < edge_b, "self edge pair " << edge_a << ", " << edge_b << " not ordered");
-    if (ea[0] == eb[0] || ea[0] == eb[1] || ea[1] == eb[0] || ea[1] == eb[1]) return std::nullopt;
-  }
+  if (a.index == b.index) RECOIL_CHECK(edge_a < edge_b, "self edge pair " << edge_a << ", " << edge_b << " not ordered");
   const CollisionSurface& sa = *a.surface;
   const CollisionSurface& sb = *b.surface;
   const Eigen::Vector3d a0 = row(sa.x0, ea[0]), a1 = row(sa.x0, ea[1]);
@@ -309,6 +337,7 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const double distance = ((a0 + closest.s * (a1 - a0)) - (b0 + closest.t * (b1 - b0))).norm();
   const double motion = a.edge_motion[edge_a] + b.edge_motion[edge_b];
   if (!(distance <= margin + motion)) return std::nullopt;  // cheap: |relative| <= motion
+  if (a.index == b.index && close_at_rest(a, ea, eb, margin)) return std::nullopt;
   // A flat edge adds nothing its neighbours do not (narrow_phase.h).
   const double flat = kFeatureSnapShare * margin;
   if (edge_bend(a, edge_a) <= flat || edge_bend(b, edge_b) <= flat) return std::nullopt;

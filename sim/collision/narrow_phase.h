@@ -36,8 +36,11 @@
 //   (normal rows with cosine 0.9999): near-duplicates that the contact
 //   solver cannot tell apart.
 // - vertex v / plane: min(signed distance at x0, at x1) <= margin.
-// Self-contact drops a vertex against the triangles of its one-ring and
-// edges sharing a vertex. Pairs of two prescribed (static or kinematic)
+// Self-contact drops every pair whose primitives lie within the margin of
+// each other in the surface's rest shape (a vertex and its own triangles,
+// edges sharing a vertex, neighbours on a fine mesh, a narrow modelled gap),
+// so a body at rest or falling freely has no self candidates while a body
+// that folds onto itself does. Pairs of two prescribed (static or kinematic)
 // surfaces, and prescribed surfaces against planes, are never tested.
 //
 // Closest-point weights: a vertex-triangle closest point on an edge or vertex
@@ -90,6 +93,12 @@ struct PreparedSurface {
                                                   // non-manifold or inconsistently wound edge)
   bool closed = false;                        // every edge has both triangles, wound consistently
   double max_motion = 0.0;                    // over all vertices
+  // Self-contact surfaces only: |x1 - x0 - mean over vertices of (x1 - x0)|
+  // (#V) and its largest value. Two vertices move with respect to each
+  // other by at most the sum of theirs, so a body falling or sliding as a
+  // whole searches its own surface within the margin alone.
+  std::vector<double> deformation_motion;
+  double max_deformation_motion = 0.0;
   double length_scale = 0.0;                  // largest |coordinate|, for tolerances
   Aabb box0;                                  // bounding box of x0
 

@@ -59,6 +59,7 @@ std::vector<CollisionSurface> ContactModel::collision_surfaces(const Eigen::Vect
     predicted_positions(m_surfaces[s], m_state, dv, out[s].x1);
     out[s].triangles = m_surfaces[s].triangles;
     out[s].self_contact = m_surfaces[s].self_contact;
+    out[s].rest = m_surfaces[s].rest;
   }
   return out;
 }

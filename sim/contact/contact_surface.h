@@ -18,6 +18,7 @@ struct ContactSurface {
   SurfaceKind kind = SurfaceKind::deformable;
   double mu_static = 0.5, mu_kinetic = 0.5;
   bool self_contact = false;
+  const Points* rest = nullptr;  // #V by 3, rest shape for the self-contact rule (collision_types.h)
   Triangles triangles;  // #F by 3
   // Deformable: the embedding of the surface in the body's tets, whose local
   // node numbers start at node_offset in the DoF layout.

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <iostream>
+#include <memory>
 
 #include "sim/collision/brute_force.h"
 #include "tests/sim/collision/collision_candidate_checks.h"
@@ -22,6 +23,7 @@ using testing::moving_surface;
 struct RandomScene {
   std::vector<CollisionSurface> surfaces;
   std::vector<CollisionPlane> planes;
+  std::shared_ptr<Points> rest;  // the self-contact surface's rest shape, before the dent
 };
 
 RandomScene random_scene(unsigned seed) {
@@ -38,6 +40,8 @@ RandomScene random_scene(unsigned seed) {
   for (Eigen::Index i = 0; i < sa.x1.rows(); ++i)
     for (int k = 0; k < 3; ++k) sa.x1(i, k) += 0.002 * u(rng);
   sa.self_contact = true;
+  scene.rest = std::make_shared<Points>(sa.x0);
+  sa.rest = scene.rest.get();
   // Fold a dent into the sphere so self-contact has something to find.
   for (Eigen::Index i = 0; i < a.vertices.rows(); ++i)
     if (sa.x0(i, 0) > 0.08) {
@@ -183,14 +187,19 @@ TEST(CollisionDetector, BodiesFallingTogetherGiveNoCandidatesUntilTheyClose) {
 }
 
 TEST(CollisionDetector, SelfContactSkipsNeighbours) {
-  // A sheet folded over itself: two layers 1 mm apart in one deformable surface.
+  // A sheet folded over itself: two layers 1 mm apart in one deformable
+  // surface, which at rest lay side by side 0.2 m apart.
   TriMesh sheet = testing::grid(8, 0.01);
   TriMesh upper = sheet;
   upper.vertices.col(2).array() += 0.001;
   upper.vertices.col(0).array() += 0.003;
+  TriMesh unfolded = sheet, beside = sheet;
+  beside.vertices.col(0).array() += 0.2;
   append(sheet, upper);
+  append(unfolded, beside);
   CollisionSurface s = moving_surface(sheet, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero());
   s.self_contact = true;
+  s.rest = &unfolded.vertices;
   CollisionDetector detector({0.002, 1});
   const auto found = detector.detect({s}, {});
   testing::expect_same_candidates(found, brute_force_candidates({s}, {}, {0.002, 1}), 1e-9);
