@@ -18,24 +18,25 @@ namespace {
 
 const std::vector<std::string> kAllBodyKeys = {
     "name",     "type",     "mesh",     "primitive", "tets",     "material", "density", "friction", "transform",
-    "velocity", "angular_velocity", "motion", "pinned", "color", "opacity", "point",   "normal",   "self_contact"};
+    "velocity", "angular_velocity", "motion", "pinned", "color", "opacity", "point",   "normal",   "self_contact",
+    "collision"};
 
 std::vector<std::string> keys_for(SceneBodyType type) {
   std::vector<std::string> keys = {"name", "type"};
   auto add = [&](std::initializer_list<const char*> more) { keys.insert(keys.end(), more.begin(), more.end()); };
   switch (type) {
     case SceneBodyType::plane: add({"point", "normal", "friction"}); break;
-    case SceneBodyType::fixed: add({"mesh", "primitive", "friction", "transform", "color", "opacity"}); break;
+    case SceneBodyType::fixed: add({"mesh", "primitive", "friction", "transform", "color", "opacity", "collision"}); break;
     case SceneBodyType::kinematic:
-      add({"mesh", "primitive", "friction", "transform", "color", "opacity", "motion"});
+      add({"mesh", "primitive", "friction", "transform", "color", "opacity", "motion", "collision"});
       break;
     case SceneBodyType::rigid:
       add({"mesh", "primitive", "friction", "transform", "color", "opacity", "density", "velocity",
-           "angular_velocity"});
+           "angular_velocity", "collision"});
       break;
     case SceneBodyType::deformable:
       add({"mesh", "primitive", "friction", "transform", "color", "opacity", "tets", "material", "velocity",
-           "pinned", "self_contact"});
+           "pinned", "self_contact", "collision"});
       break;
   }
   return keys;
@@ -201,6 +202,26 @@ void parse_material(const JsonCursor& c, sim::Material& m) {
   m.damping_ratio = field("damping", 0.0, 0.0, 10.0, false, false);
 }
 
+// `collision`: "mesh" (the mesh itself), {"triangles": N} or
+// {"edge_length": m}; absent: the default edge (sim/collision/collision_proxy.h).
+sim::CollisionSurfaceDesc parse_collision(const JsonCursor& c) {
+  sim::CollisionSurfaceDesc out;
+  if (c.value().is_string()) {
+    if (c.string() != "mesh") c.fail("expected \"mesh\", {\"triangles\": N} or {\"edge_length\": metres}");
+    out.keep_mesh = true;
+    return out;
+  }
+  c.expect_object({"triangles", "edge_length"});
+  if (c.has("triangles") && c.has("edge_length")) c.fail("give triangles or edge_length, not both");
+  if (c.has("triangles")) {
+    out.max_triangles = c.child("triangles").integer();
+    if (out.max_triangles < 4) c.child("triangles").fail("must be >= 4");
+  } else if (c.has("edge_length")) {
+    out.edge_length = c.child("edge_length").positive();
+  }
+  return out;
+}
+
 render::Rgb parse_body_color(const JsonCursor& c) {
   return parse_color(c.string(), c.file() + ": " + c.pointer());
 }
@@ -257,6 +278,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     d.kinetic_friction = friction.kinetic_coefficient;
     parse_material(body.child_or_empty("material"), d.material);
     d.velocity = body.vec3_or("velocity", Eigen::Vector3d::Zero());
+    if (body.has("collision")) d.collision = parse_collision(body.child("collision"));
     d.self_contact = body.boolean_or("self_contact", true);
     // A tetrahedral mesh file gives the tets; its boundary is the surface.
     d.tets = std::move(geometry.tets);
@@ -306,6 +328,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     r.mesh = std::move(geometry.surface);
     r.transform = transform;
     r.friction = friction;
+    if (body.has("collision")) r.collision = parse_collision(body.child("collision"));
     if (type == SceneBodyType::rigid) {
       r.density = body.has("density") ? body.child("density").positive() : body.number_or("density", 1000.0);
       r.velocity = body.vec3_or("velocity", Eigen::Vector3d::Zero());

@@ -30,16 +30,22 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
     } else if (b.type == SceneBodyType::deformable) {
       // World bodies are in deformable-description order.
       const sim::DeformableBody& body = world->body(b.index);
-      row["surface_vertices"] = body.surface.num_vertices();
-      row["surface_triangles"] = body.surface.num_triangles();
+      const sim::TriMesh& drawn = body.render_surface.empty() ? body.surface : body.render_surface;
+      row["surface_vertices"] = drawn.num_vertices();
+      row["surface_triangles"] = drawn.num_triangles();
+      row["collision_triangles"] = body.surface.num_triangles();
+      row["collision_offset"] = body.collision_deviation;
       row["nodes"] = body.num_nodes;
       row["tets"] = body.rest.num_tets();
       row["mass"] = body.mass.sum();
       row["volume"] = body.surface_volume;
     } else {
       const sim::RigidBodyDesc& r = scene.world.rigid_bodies[static_cast<size_t>(b.index)];
+      const sim::RigidBody& body = world->rigid_body(b.index);
       row["surface_vertices"] = r.mesh.num_vertices();
       row["surface_triangles"] = r.mesh.num_triangles();
+      row["collision_triangles"] = body.triangles.rows();
+      row["collision_offset"] = body.collision_deviation;
     }
     bodies.push_back(row);
   }
@@ -65,6 +71,9 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
     text << "    " << std::left << std::setw(16) << row["name"].get<std::string>() << std::setw(11)
          << row["type"].get<std::string>();
     if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
+    if (row.contains("collision_triangles") && row["collision_triangles"] != row["surface_triangles"])
+      text << " (collision " << row["collision_triangles"] << ", offset outward by "
+           << row["collision_offset"].get<double>() * 1e3 << " mm)";
     if (row.contains("tets"))
       text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes, mass " << row["mass"].get<double>() << " kg";
     text << "\n";

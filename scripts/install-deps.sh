@@ -12,6 +12,7 @@ packages=(
   libembree-dev          # Embree 3: collision queries
   libosmesa6-dev         # OSMesa: offscreen software OpenGL
   libassimp-dev          # assimp 5: mesh import
+  libmeshoptimizer-dev   # meshoptimizer: collision surfaces simplified from fine meshes
   libpng-dev             # PNG read/write
   libcli11-dev           # command line
   nlohmann-json3-dev     # scene files, stats

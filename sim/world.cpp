@@ -60,7 +60,7 @@ World::World(const WorldDesc& desc)
   for (size_t i = 0; i < desc.bodies.size(); ++i) {
     const std::string where = "bodies/" + std::to_string(i);
     check_friction(desc.bodies[i].static_friction, desc.bodies[i].kinetic_friction, where + "/friction");
-    m_bodies.push_back(build_deformable_body(desc.bodies[i], *m_device, where));
+    m_bodies.push_back(build_deformable_body(desc.bodies[i], *m_device, where, desc.contact.margin));
     m_bodies.back().node_offset = nodes;
     nodes += m_bodies.back().num_nodes;
     m_mu_static.push_back(desc.bodies[i].static_friction);
@@ -68,7 +68,8 @@ World::World(const WorldDesc& desc)
     m_self_contact.push_back(desc.bodies[i].self_contact);
   }
   for (size_t i = 0; i < desc.rigid_bodies.size(); ++i) {
-    m_rigid.push_back(build_rigid_body(desc.rigid_bodies[i], "rigid_bodies/" + std::to_string(i)));
+    m_rigid.push_back(
+        build_rigid_body(desc.rigid_bodies[i], *m_device, "rigid_bodies/" + std::to_string(i), desc.contact.margin));
     if (m_rigid.back().motion == RigidMotion::dynamic) {
       m_rigid.back().linear_node = nodes;
       nodes += 2;
@@ -234,8 +235,9 @@ std::vector<BodySurface> World::surfaces() const {
     s.name = body.name;
     Points nodes(body.num_nodes, 3);
     for (int n = 0; n < body.num_nodes; ++n) nodes.row(n) = m_x.segment<3>(3 * (body.node_offset + n)).transpose();
-    embedded_positions(body.embedding, body.rest.tets, nodes, s.positions);
-    s.triangles = body.surface.triangles;
+    const bool own_render = !body.render_surface.empty();
+    embedded_positions(own_render ? body.render_embedding : body.embedding, body.rest.tets, nodes, s.positions);
+    s.triangles = own_render ? body.render_surface.triangles : body.surface.triangles;
     out.push_back(std::move(s));
   }
   for (const RigidBody& body : m_rigid) {
@@ -244,8 +246,9 @@ std::vector<BodySurface> World::surfaces() const {
     s.kind = body.motion == RigidMotion::dynamic     ? BodyKind::rigid
              : body.motion == RigidMotion::kinematic ? BodyKind::kinematic
                                                      : BodyKind::fixed;
-    world_points(body.local, body.pose, s.positions);
-    s.triangles = body.triangles;
+    const bool own_render = body.render_triangles.rows() > 0;
+    world_points(own_render ? body.render_local : body.local, body.pose, s.positions);
+    s.triangles = own_render ? body.render_triangles : body.triangles;
     out.push_back(std::move(s));
   }
   return out;

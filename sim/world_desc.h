@@ -43,6 +43,7 @@ struct RigidBodyDesc {
   FrictionDesc friction;
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // m/s, world: initial (dynamic) or constant (kinematic)
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world, same
+  CollisionSurfaceDesc collision;  // its default edge is that of a deformable body at the default resolution
 };
 
 struct ContactSettings {

@@ -44,7 +44,8 @@ Eigen::Matrix3d Transform::rotation_matrix() const {
       .toRotationMatrix();
 }
 
-DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevice& device, const std::string& where) {
+DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevice& device, const std::string& where,
+                                     double margin) {
   validate(desc.material, where + "/material");
   if (!desc.transform.position.allFinite() || !desc.transform.rotation.allFinite() || !desc.velocity.allFinite())
     throw bad_input(where + ": transform and velocity must be finite");
@@ -67,6 +68,19 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
     if (!(tet_volume(body.rest, t) > 0.0)) throw bad_input(where + ": tetrahedron " + std::to_string(t) + " is degenerate");
   body.num_nodes = body.rest.num_nodes();
   body.elements = element_rest(body.rest);
+  // The collision surface: the mesh itself, or a simplified copy of it
+  // (then the mesh is kept to draw). Volume and mass come from the mesh.
+  // The lattice cell from the tets themselves (they may come from a file):
+  // a cube of edge c splits into six tets of c^3 / 6.
+  const double cell = std::cbrt(6.0 * total_volume(body.rest) / body.rest.num_tets());
+  const CollisionProxy proxy =
+      make_collision_proxy(device, body.surface, collision_budget(desc.collision, body.surface, cell, margin));
+  if (proxy.simplified) {
+    body.render_surface = std::move(body.surface);
+    body.render_embedding = embed_points(body.rest, body.render_surface.vertices);
+    body.surface = proxy.surface;
+    body.collision_deviation = proxy.deviation;
+  }
   body.embedding = embed_points(body.rest, body.surface.vertices);
 
   // Lumped masses from the tets, rescaled so the total is density times the
@@ -78,7 +92,7 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
     tet_mass += m;
     for (int k = 0; k < 4; ++k) body.mass[body.rest.tets(t, k)] += 0.25 * m;
   }
-  body.surface_volume = enclosed_volume(body.surface);
+  body.surface_volume = enclosed_volume(body.render_surface.empty() ? body.surface : body.render_surface);
   if (!(body.surface_volume > 0.0)) {
     // An open or inward-wound surface: fall back to the tets' own volume.
     body.surface_volume = tet_mass / desc.material.density;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/collision/collision_proxy.h"
 #include "sim/fem/element.h"
 #include "sim/fem/material.h"
 #include "sim/geometry/embedding.h"
@@ -47,6 +48,7 @@ struct DeformableBodyDesc {
   double static_friction = 0.5;   // see FrictionDesc in sim/world_desc.h
   double kinetic_friction = 0.5;
   bool self_contact = true;
+  CollisionSurfaceDesc collision;
 };
 
 struct DeformableBody {
@@ -64,14 +66,22 @@ struct DeformableBody {
   Eigen::VectorXd mass;          // #nodes lumped masses, kg
   std::vector<char> pinned;      // #nodes
   double surface_volume = 0.0;   // m^3 enclosed by the surface (mass = density * this)
-  TriMesh surface;               // rest surface (triangles used for rendering/contact)
-  Embedding embedding;           // surface vertices in the tets
+  TriMesh surface;               // rest collision surface (what contact sees)
+  Embedding embedding;           // its vertices in the tets
+  // The imported mesh when the collision surface is a simplified copy of it
+  // (empty otherwise: `surface` is also what is drawn), embedded in the same
+  // tets so that it follows the simulation exactly.
+  TriMesh render_surface;
+  Embedding render_embedding;
+  double collision_deviation = 0.0;  // m: the outward offset of a simplified collision surface
   std::vector<std::array<int, 16>> block_index;  // per tet: storage index of block (a, b) at 4a+b
 };
 
 // Builds the body (tetrahedralizing through `device` when needed). Throws
 // bad_input naming `where` for invalid descriptions. Initial positions are
 // the rest nodes; the caller copies them into the global vectors.
-DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevice& device, const std::string& where);
+// `margin` (m) is the world's contact margin, for the default collision surface.
+DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevice& device, const std::string& where,
+                                     double margin);
 
 }  // namespace recoil::sim

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/error.h"
+#include "sim/collision/collision_proxy.h"
 #include "sim/geometry/skew.h"
 #include "sim/rigid/mass_properties.h"
 
@@ -19,7 +20,7 @@ double RigidBody::kinetic_energy() const {
   return 0.5 * mass * velocity.squaredNorm() + 0.5 * angular_velocity.dot(world_inertia() * angular_velocity);
 }
 
-RigidBody build_rigid_body(const RigidBodyDesc& desc, const std::string& where) {
+RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin) {
   if (desc.mesh.empty()) throw bad_input(where + "/mesh: a rigid body needs a surface");
   if (!desc.mesh.vertices.allFinite()) throw bad_input(where + "/mesh: vertices must be finite");
   if (!desc.transform.position.allFinite() || !desc.transform.rotation.allFinite() || !desc.velocity.allFinite() ||
@@ -58,7 +59,17 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, const std::string& where) 
   }
   if (desc.motion != RigidMotion::fixed) body.angular_velocity = desc.angular_velocity;
   body.pose.center = reference;
-  body.local = mesh.vertices.rowwise() - reference.transpose();
+  // The cell a deformable body of this shape would have at the default resolution.
+  const double cell = bounding_box(mesh).extent().maxCoeff() / DeformableBodyDesc{}.resolution;
+  const CollisionProxy proxy = make_collision_proxy(device, mesh, collision_budget(desc.collision, mesh, cell, margin));
+  if (proxy.simplified) {
+    body.render_local = mesh.vertices.rowwise() - reference.transpose();
+    body.render_triangles = mesh.triangles;
+    body.triangles = proxy.surface.triangles;
+    body.collision_deviation = proxy.deviation;
+  }
+  const Points& collision = proxy.simplified ? proxy.surface.vertices : mesh.vertices;
+  body.local = collision.rowwise() - reference.transpose();
   return body;
 }
 

@@ -30,8 +30,13 @@ struct RigidPose {
 struct RigidBody {
   std::string name;
   RigidMotion motion = RigidMotion::dynamic;
-  Points local;           // #V by 3, surface vertices relative to the reference point, body frame
+  Points local;           // #V by 3, collision surface vertices relative to the reference point, body frame
   Triangles triangles;    // #F by 3
+  // The imported mesh, body frame, when the collision surface is a simplified
+  // copy of it (empty otherwise: local/triangles are also what is drawn).
+  Points render_local;
+  Triangles render_triangles;
+  double collision_deviation = 0.0;  // m: the outward offset of a simplified collision surface
   double mass = 0.0;                                      // kg (dynamic only)
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();      // kg m^2, body frame, about the centre of mass
   FrictionDesc friction;
@@ -48,8 +53,9 @@ struct RigidBody {
 
 // Throws bad_input naming `where` (e.g. "rigid_bodies/2") for an invalid
 // description: empty or non-finite mesh, a dynamic body with non-positive
-// density or enclosed volume.
-RigidBody build_rigid_body(const RigidBodyDesc& desc, const std::string& where);
+// density or enclosed volume. Mass properties come from the mesh; `margin`
+// (m, the world's contact margin) sets the default collision surface.
+RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin);
 
 // The pose after moving for h seconds at constant velocity and angular
 // velocity: c + h v, exp(h w) q (exact rotation, then re-normalised).

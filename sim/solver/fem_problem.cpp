@@ -18,7 +18,7 @@ OwnedProblem fem_block_on_ground(const FemBlockParams& params) {
   desc.material.density = params.density;
   desc.transform.position = Eigen::Vector3d(0.0, 0.0, 0.5 * params.size);  // bottom face on z = 0
   EmbreeDevice device;
-  DeformableBody body = build_deformable_body(desc, device, "fem_block_on_ground");
+  DeformableBody body = build_deformable_body(desc, device, "fem_block_on_ground", /*margin=*/0.002);
   body.node_offset = 0;
   const int nodes = body.num_nodes;
   Eigen::VectorXd x(3 * nodes), v(3 * nodes);

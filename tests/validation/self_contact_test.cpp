@@ -22,6 +22,7 @@ TEST(SelfContact, AFineSurfaceFallingFreelyHasNoCandidates) {
   WorldDesc w = base_world(0.004);
   DeformableBodyDesc b = soft_sphere("ball", 0.02, 5, jelly(1e5), Eigen::Vector3d::Zero());
   b.mesh = make_sphere(0.02, 4);
+  b.collision.keep_mesh = true;  // contact sees the fine mesh itself
   b.self_contact = true;
   w.bodies.push_back(b);
   World world(w);

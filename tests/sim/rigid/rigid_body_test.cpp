@@ -7,6 +7,7 @@
 #include <iostream>
 
 #include "core/error.h"
+#include "sim/collision/embree_scene.h"
 #include "sim/geometry/primitives.h"
 #include "sim/geometry/skew.h"
 #include "sim/rigid/mass_properties.h"
@@ -70,11 +71,12 @@ TEST(MassProperties, SphereAndCylinderApproachAnalyticValues) {
 }
 
 TEST(RigidBody, BuildPlacesCentreAndRejectsOpenSurfaces) {
+  EmbreeDevice device;
   RigidBodyDesc desc;
   desc.mesh = make_box({0.2, 0.2, 0.2}, 1);
   desc.transform.position = Eigen::Vector3d(0.0, 1.0, 0.0);
   desc.transform.rotation = Eigen::Vector3d(0.0, 0.0, 30.0);
-  const RigidBody body = build_rigid_body(desc, "rigid_bodies/0");
+  const RigidBody body = build_rigid_body(desc, device, "rigid_bodies/0", 0.002);
   EXPECT_NEAR(body.mass, 1000.0 * 0.008, 1e-12);
   EXPECT_LT((body.pose.center - desc.transform.position).norm(), 1e-12);
   Points world;
@@ -83,12 +85,12 @@ TEST(RigidBody, BuildPlacesCentreAndRejectsOpenSurfaces) {
 
   RigidBodyDesc inward = desc;  // wound inside out: negative enclosed volume
   inward.mesh.triangles = inward.mesh.triangles.rowwise().reverse().eval();
-  EXPECT_THROW(build_rigid_body(inward, "rigid_bodies/1"), Error);
+  EXPECT_THROW(build_rigid_body(inward, device, "rigid_bodies/1", 0.002), Error);
   RigidBodyDesc light = desc;
   light.density = 0.0;
-  EXPECT_THROW(build_rigid_body(light, "rigid_bodies/2"), Error);
+  EXPECT_THROW(build_rigid_body(light, device, "rigid_bodies/2", 0.002), Error);
   light.motion = RigidMotion::kinematic;  // density is not used by kinematic bodies
-  EXPECT_NO_THROW(build_rigid_body(light, "rigid_bodies/2"));
+  EXPECT_NO_THROW(build_rigid_body(light, device, "rigid_bodies/2", 0.002));
 }
 
 TEST(RigidBody, PoseUpdateIsExactForConstantSpin) {
