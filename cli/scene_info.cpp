@@ -41,6 +41,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
       row["surface_vertices"] = r.mesh.num_vertices();
       row["surface_triangles"] = r.mesh.num_triangles();
     }
+    if (b.type != SceneBodyType::plane) row["open_mesh"] = b.open_mesh;
     bodies.push_back(row);
   }
   const long steps = std::lround(scene.duration / scene.world.dt);
@@ -67,6 +68,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
     if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
     if (row.contains("tets"))
       text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes, mass " << row["mass"].get<double>() << " kg";
+    if (row.value("open_mesh", false)) text << " (open mesh: inside by winding number)";
     text << "\n";
   }
   std::cout << text.str();
