@@ -75,7 +75,7 @@ bool ray_vote_inside(const sim::TriangleScene& scene, const Eigen::Vector3d& p) 
   return 2 * votes > 5;
 }
 
-// Every 50th triangle removed: 73 holes, the kind of damage a scan has.
+// Every 50th triangle removed (74 of the bunny's): holes as a scan has them.
 sim::TriMesh with_holes(const sim::TriMesh& mesh) {
   sim::TriMesh out;
   out.vertices = mesh.vertices;
