@@ -7,8 +7,11 @@
 
 #include "cli/commands.h"
 #include "cli/scene_info.h"
+#include "core/error.h"
+#include "sim/fem/deformable_body.h"
 #include "sim/geometry/mesh_import.h"
 #include "sim/geometry/mesh_stats.h"
+#include "sim/geometry/tetrahedralize.h"
 
 namespace recoil::cli {
 namespace {
@@ -16,17 +19,38 @@ namespace {
 struct InfoOptions {
   std::string path;
   bool json = false;
+  // Lattice cells along the longest side, as a deformable body's tets.resolution.
+  int resolution = sim::DeformableBodyDesc{}.resolution;
 };
 
 nlohmann::json to_json(const sim::Aabb& box) {
   return {{"min", {box.min.x(), box.min.y(), box.min.z()}}, {"max", {box.max.x(), box.max.y(), box.max.z()}}};
 }
 
-int run_info(const InfoOptions& options) {
-  if (std::filesystem::path(options.path).extension() == ".json") return print_scene_info(options.path, options.json);
+int run_info(const InfoOptions& options, bool resolution_given) {
+  if (std::filesystem::path(options.path).extension() == ".json") {
+    if (resolution_given) throw bad_input("--resolution applies to a mesh; a scene gives each body's tets.resolution");
+    return print_scene_info(options.path, options.json);
+  }
   const sim::TriMesh mesh = sim::import_surface(options.path);
   const sim::MeshStats stats = sim::compute_mesh_stats(mesh);
   const Eigen::Vector3d size = stats.bounds.extent();
+  // The tets a deformable body of this mesh gets (the same call the World
+  // makes); a mesh that cannot have any (flat) still gets its statistics.
+  sim::TetrahedralizeStats lattice;
+  sim::TetMesh tets;
+  std::string no_tets;
+  try {
+    tets = sim::tetrahedralize(mesh, options.resolution, &lattice);
+  } catch (const Error& e) {
+    no_tets = e.what();
+  }
+  const nlohmann::json tetrahedra =
+      no_tets.empty() ? nlohmann::json{{"resolution", options.resolution},
+                                       {"cell_size", lattice.cell_size},
+                                       {"nodes", tets.num_nodes()},
+                                       {"tets", tets.num_tets()}}
+                      : nlohmann::json(nullptr);
   if (options.json) {
     nlohmann::json out = {{"file", options.path},
                           {"vertices", stats.vertices},
@@ -38,7 +62,8 @@ int run_info(const InfoOptions& options) {
                           {"inconsistent_edges", stats.inconsistent_edges},
                           {"bounds", to_json(stats.bounds)},
                           {"area", stats.area},
-                          {"volume", stats.watertight ? nlohmann::json(stats.volume) : nlohmann::json(nullptr)}};
+                          {"volume", stats.watertight ? nlohmann::json(stats.volume) : nlohmann::json(nullptr)},
+                          {"tetrahedra", tetrahedra}};
     std::cout << out.dump(2) << "\n";
     return 0;
   }
@@ -51,14 +76,20 @@ int run_info(const InfoOptions& options) {
   if (stats.watertight) {
     text << "  watertight   yes\n";
   } else {
-    text << "  watertight   no (" << stats.boundary_edges << " boundary, " << stats.non_manifold_edges
-         << " non-manifold, " << stats.inconsistent_edges << " inconsistently oriented edges)\n";
+    text << "  watertight   no: open mesh (" << stats.boundary_edges << " boundary, " << stats.non_manifold_edges
+         << " non-manifold, " << stats.inconsistent_edges
+         << " inconsistently oriented edges); inside by winding number\n";
   }
   text << "  bounds       [" << stats.bounds.min.transpose() << "] .. [" << stats.bounds.max.transpose() << "]\n"
        << "  size         " << size.x() << " x " << size.y() << " x " << size.z() << "\n"
        << "  area         " << stats.area << "\n";
   if (stats.watertight) text << "  volume       " << stats.volume << "\n";
   else text << "  volume       - (the surface is not closed)\n";
+  if (no_tets.empty())
+    text << "  tetrahedra   " << tets.num_tets() << " tets, " << tets.num_nodes() << " nodes at resolution "
+         << options.resolution << " (cells of " << lattice.cell_size << " m)\n";
+  else
+    text << "  tetrahedra   - (" << no_tets << ")\n";
   std::cout << text.str();
   return 0;
 }
@@ -72,13 +103,24 @@ void add_info_command(CLI::App& app, const GlobalOptions&, Action& action) {
                   "Mesh file (OBJ, PLY, STL, glTF, Collada, FBX, ... anything assimp reads) or scene file (.json)")
       ->required();
   cmd->add_flag("--json", options->json, "Print the statistics as one JSON object on stdout");
+  CLI::Option* resolution =
+      cmd->add_option("--resolution", options->resolution,
+                      "Lattice cells along the mesh's longest side for the tetrahedra it would get "
+                      "(a deformable body's tets.resolution)")
+          ->check(CLI::Range(1, 256))
+          ->capture_default_str();
   cmd->footer(
       "Examples:\n"
       "  recoil info assets/meshes/bunny.obj\n"
       "  recoil info model.glb --json | jq .volume\n"
+      "  recoil info part.stl --resolution 16             # the tetrahedra at 16 cells along the longest side\n"
       "  recoil info assets/scenes/bunny-drop.json       # bodies, tetrahedra, masses, frames\n"
-      "A mesh must be watertight (closed, manifold, consistently oriented) to become a deformable or rigid body.\n");
-  cmd->callback([options, &action] { action = [options] { return run_info(*options); }; });
+      "Open meshes (holes, flipped faces, several shells) can be simulated too: inside and outside are\n"
+      "decided by the generalized winding number, and runs name them in their summary.\n");
+  cmd->callback([options, resolution, &action] {
+    const bool given = resolution->count() > 0;
+    action = [options, given] { return run_info(*options, given); };
+  });
 }
 
 }  // namespace recoil::cli

@@ -7,6 +7,7 @@
 #include "cli/progress.h"
 #include "cli/render_options.h"
 #include "cli/turntable.h"
+#include "cli/up_axis.h"
 #include "sim/geometry/mesh_import.h"
 
 namespace recoil::cli {
@@ -17,6 +18,7 @@ struct TurntableOptions {
   std::string output;
   int frames = 120;
   double elevation = 20.0;  // degrees above the horizon
+  UpAxis up = UpAxis::pos_y;
   RenderOptions render;
 };
 
@@ -32,6 +34,7 @@ int run_turntable(const TurntableOptions& options, const GlobalOptions& global) 
                        ? default_output_dir(std::filesystem::path(options.mesh).stem().string())
                        : std::filesystem::path(options.output);
   sim::TriMesh mesh = sim::import_surface(options.mesh);
+  apply_up(options.up, mesh);
   ensure_output_dir(job.output_dir);
   Progress progress(global, "turntable", options.frames);
   render_turntable(std::move(mesh), job, [&](int done) { progress.update(done); });
@@ -51,14 +54,17 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
       ->check(CLI::Range(1, 1000000))->capture_default_str();
   cmd->add_option("--elevation", options->elevation, "Camera height above the horizon, degrees")
       ->check(CLI::Range(-89.0, 89.0))->capture_default_str();
+  add_up_option(*cmd, options->up);
   add_render_options(*cmd, options->render);
   cmd->footer(
-      "The mesh is stood on a ground plane and the camera circles it once; frames are\n"
-      "written as DIR/frame_0001.png, frame_0002.png, ... (PNG encoding overlaps rendering).\n\n"
+      "The mesh is stood on a ground plane, its --up axis (default +Y) turned to world +Y, and\n"
+      "the camera circles it once; frames are written as DIR/frame_0001.png, frame_0002.png, ...\n"
+      "(PNG encoding overlaps rendering).\n\n"
       "Examples:\n"
       "  recoil turntable assets/meshes/bunny.obj\n"
       "  recoil turntable model.glb --frames 240 --elevation 35 --resolution 1920x1080 -o preview/\n"
       "  recoil turntable part.stl --color '#8fb3d9' --background transparent --msaa 0\n"
+      "  recoil turntable bracket.stl --up +Z       # a Z-up CAD export, stood as modelled\n"
       "  ffmpeg -framerate 30 -i output/bunny/frame_%04d.png bunny.mp4   # make a video\n");
   cmd->callback([options, &global, &action] { action = [options, &global] { return run_turntable(*options, global); }; });
 }

@@ -21,16 +21,18 @@ struct Source {
   std::string path;    // absolute
   std::string stem;
   double scale = 1.0;
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // local bounding-box centre
-  double bottom = 0.0;                               // local min y
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // local bounding-box centre, after `up`
+  double bottom = 0.0;                               // local min y, after `up`
   double radius = 0.0;                               // bounding sphere of the scaled box, m
 };
 
-Source load_source(const std::string& path) {
+// Sizes and places the mesh as it will stand: after its up axis is turned to +Y.
+Source load_source(const std::string& path, UpAxis up) {
   Source s;
   s.path = fs::absolute(path).lexically_normal().string();
   s.stem = fs::path(path).stem().string();
-  const sim::TriMesh mesh = sim::import_surface(path);
+  sim::TriMesh mesh = sim::import_surface(path);
+  apply_up(up, mesh);
   const sim::Aabb box = sim::bounding_box(mesh);
   const double size = box.extent().maxCoeff();
   if (!(size > 0)) throw bad_input(path + ": the mesh is flat or empty");
@@ -62,7 +64,7 @@ double uniform(std::mt19937_64& rng, double lo, double hi) {
 nlohmann::json build_drop_scene(const DropSettings& settings) {
   if (settings.meshes.empty()) throw bad_input("drop: give at least one mesh");
   std::vector<Source> sources;
-  for (const std::string& path : settings.meshes) sources.push_back(load_source(path));
+  for (const std::string& path : settings.meshes) sources.push_back(load_source(path, settings.up));
   const bool pile = settings.count > 1;
   const int bodies = pile ? settings.count : static_cast<int>(sources.size());
   const bool many = bodies > 2;
@@ -98,6 +100,7 @@ nlohmann::json build_drop_scene(const DropSettings& settings) {
     if (!pile) position.y() = settings.height - s.scale * s.bottom;
     nlohmann::json body = {{"name", pile || sources.size() > 1 ? s.stem + "-" + std::to_string(i + 1) : s.stem},
                            {"mesh", s.path},
+                           {"up", to_string(settings.up)},
                            {"friction", settings.friction},
                            {"transform", {{"position", vec(position)}, {"rotation", vec(rotation)}, {"scale", s.scale}}}};
     if (settings.material == "rigid") {

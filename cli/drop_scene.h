@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "cli/up_axis.h"
+
 namespace recoil::cli {
 
 struct DropSettings {
@@ -17,6 +19,7 @@ struct DropSettings {
   int count = 1;                  // copies in the pile (cycling through the meshes); 1: one of each
   double seconds = 3.0;           // simulated
   unsigned seed = 1;              // of the pile's jitter and orientations
+  UpAxis up = UpAxis::pos_y;      // of every mesh file; recorded in each body's "up"
 };
 
 // A scene file document (SPEC.md section 3) with absolute mesh paths. Throws

@@ -93,7 +93,7 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
   job.scene = std::move(scene);
   const RunResult result = run_scene(job, global);
   // The summary line: always when it carries a warning, which -q never hides.
-  const std::string warnings = describe_warnings(result.quality);
+  const std::string warnings = describe_run_warnings(result);
   if (global.log_json) {
     const nlohmann::json line = {{"event", "summary"},       {"scene", job.scene.name},
                                  {"steps", result.steps},     {"frames_written", result.frames_written},

@@ -6,9 +6,11 @@
 #include <numbers>
 #include <optional>
 
+#include "cli/up_axis.h"
 #include "core/error.h"
 #include "sim/geometry/boundary.h"
 #include "sim/geometry/mesh_import.h"
+#include "sim/geometry/mesh_stats.h"
 #include "sim/geometry/primitives.h"
 #include "sim/geometry/tet_file.h"
 
@@ -19,23 +21,25 @@ namespace {
 const std::vector<std::string> kAllBodyKeys = {
     "name",     "type",     "mesh",     "primitive", "tets",     "material", "density", "friction", "transform",
     "velocity", "angular_velocity", "motion", "pinned", "color", "opacity", "point",   "normal",   "self_contact",
-    "collision"};
+    "up", "collision"};
 
 std::vector<std::string> keys_for(SceneBodyType type) {
   std::vector<std::string> keys = {"name", "type"};
   auto add = [&](std::initializer_list<const char*> more) { keys.insert(keys.end(), more.begin(), more.end()); };
   switch (type) {
     case SceneBodyType::plane: add({"point", "normal", "friction"}); break;
-    case SceneBodyType::fixed: add({"mesh", "primitive", "friction", "transform", "color", "opacity", "collision"}); break;
+    case SceneBodyType::fixed:
+      add({"mesh", "up", "primitive", "friction", "transform", "color", "opacity", "collision"});
+      break;
     case SceneBodyType::kinematic:
-      add({"mesh", "primitive", "friction", "transform", "color", "opacity", "motion", "collision"});
+      add({"mesh", "up", "primitive", "friction", "transform", "color", "opacity", "motion", "collision"});
       break;
     case SceneBodyType::rigid:
-      add({"mesh", "primitive", "friction", "transform", "color", "opacity", "density", "velocity",
+      add({"mesh", "up", "primitive", "friction", "transform", "color", "opacity", "density", "velocity",
            "angular_velocity", "collision"});
       break;
     case SceneBodyType::deformable:
-      add({"mesh", "primitive", "friction", "transform", "color", "opacity", "tets", "material", "velocity",
+      add({"mesh", "up", "primitive", "friction", "transform", "color", "opacity", "tets", "material", "velocity",
            "pinned", "self_contact", "collision"});
       break;
   }
@@ -156,6 +160,8 @@ struct Geometry {
   sim::TriMesh surface;
   sim::TetMesh tets;                    // when the mesh file is tetrahedral
   std::optional<Eigen::Vector3d> box;   // a box primitive's edge lengths, m
+  bool open = false;                    // a surface file that is not watertight
+  UpAxis up = UpAxis::pos_y;            // already applied to surface and tets
 };
 
 // Mesh files already read while parsing one scene, by resolved path: a
@@ -163,15 +169,9 @@ struct Geometry {
 // imports it once.
 using MeshFiles = std::map<fs::path, Geometry>;
 
-Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir, MeshFiles& files) {
-  const bool mesh = body.has("mesh"), primitive = body.has("primitive");
-  if (mesh == primitive) body.fail(mesh ? "give either \"mesh\" or \"primitive\", not both" : "needs a \"mesh\" or a \"primitive\"");
+// A mesh file as read, cached unrotated (bodies may give it different "up"s).
+Geometry read_mesh_file(const JsonCursor& c, const fs::path& base_dir, MeshFiles& files) {
   Geometry g;
-  if (primitive) {
-    g.surface = parse_primitive(body.child("primitive"), g.box);
-    return g;
-  }
-  const JsonCursor c = body.child("mesh");
   const fs::path path = resolve_file(c, base_dir).lexically_normal();
   if (const auto known = files.find(path); known != files.end()) return known->second;
   if (is_tet_file(path)) {
@@ -180,9 +180,41 @@ Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir, MeshFi
     g.surface = sim::boundary_surface(g.tets);
   } else {
     g.surface = load_geometry(c, [&] { return sim::import_surface(path); });
+    g.open = !sim::compute_mesh_stats(g.surface).watertight;
   }
   if (g.surface.empty()) c.fail("holds no triangles: " + path.string());
   files.emplace(path, g);
+  return g;
+}
+
+// A mesh body's "up" (default "+Y", recorded in the canonical spelling so the
+// resolved scene reruns alike).
+UpAxis parse_up(const JsonCursor& body) {
+  if (!body.has("up")) {
+    body.string_or("up", to_string(UpAxis::pos_y));
+    return UpAxis::pos_y;
+  }
+  const JsonCursor c = body.child("up");
+  const std::string text = c.string();
+  const std::optional<UpAxis> axis = parse_up_axis(text);
+  if (!axis) c.fail("unknown up axis \"" + text + "\" (" + kUpAxisChoices + ")");
+  c.resolve_as(to_string(*axis));
+  return *axis;
+}
+
+Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir, MeshFiles& files) {
+  const bool mesh = body.has("mesh"), primitive = body.has("primitive");
+  if (mesh == primitive) body.fail(mesh ? "give either \"mesh\" or \"primitive\", not both" : "needs a \"mesh\" or a \"primitive\"");
+  Geometry g;
+  if (primitive) {
+    if (body.has("up")) body.child("up").fail("only for mesh files; a primitive's axes are its own (use transform.rotation)");
+    g.surface = parse_primitive(body.child("primitive"), g.box);
+    return g;
+  }
+  g = read_mesh_file(body.child("mesh"), base_dir, files);
+  g.up = parse_up(body);
+  apply_up(g.up, g.surface);
+  apply_up(g.up, g.tets);
   return g;
 }
 
@@ -268,6 +300,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
   out.opacity = static_cast<float>(body.has("opacity") ? body.child("opacity").number_in(0.0, 1.0)
                                                        : body.number_or("opacity", 1.0));
   Geometry geometry = parse_geometry(body, base_dir, files);
+  out.open_mesh = geometry.open;
   const sim::Transform transform = parse_transform(body.child_or_empty("transform"));
 
   if (type == SceneBodyType::deformable) {
@@ -298,6 +331,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
         if (!is_tet_file(path)) f.fail("expected a tetrahedral mesh (.msh, .node or .ele), got " + path.string());
         d.tets = load_geometry(f, [&] { return sim::read_tet_file(path); });
         if (d.tets.empty()) f.fail("holds no tetrahedra: " + path.string());
+        apply_up(geometry.up, d.tets);  // the tets share the mesh file's axes
       }
     } else if (d.tets.empty()) {
       body.child_or_empty("tets").integer_or("resolution", d.resolution);

@@ -28,6 +28,7 @@ struct SceneBody {
   render::Rgb color{};        // sRGB
   float opacity = 1.0f;
   std::string pointer;        // "/bodies/3", for messages
+  bool open_mesh = false;     // from a surface file that is not watertight (inside/outside by winding number)
 };
 
 enum class CameraMode { fixed, orbit, follow };

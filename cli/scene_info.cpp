@@ -47,6 +47,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
       row["collision_triangles"] = body.triangles.rows();
       row["collision_offset"] = body.collision_deviation;
     }
+    if (b.type != SceneBodyType::plane) row["open_mesh"] = b.open_mesh;
     bodies.push_back(row);
   }
   const long steps = std::lround(scene.duration / scene.world.dt);
@@ -76,6 +77,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
            << row["collision_offset"].get<double>() * 1e3 << " mm)";
     if (row.contains("tets"))
       text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes, mass " << row["mass"].get<double>() << " kg";
+    if (row.value("open_mesh", false)) text << " (open mesh: inside by winding number)";
     text << "\n";
   }
   std::cout << text.str();

@@ -89,6 +89,18 @@ std::string describe_warnings(const SolveQuality& q) {
   return s.str();
 }
 
+std::string describe_run_warnings(const RunResult& result) {
+  std::string text = describe_warnings(result.quality);
+  if (result.open_meshes.empty()) return text;
+  text += std::string(text.empty() ? "" : "; ") + (result.open_meshes.size() == 1 ? "open mesh: " : "open meshes: ");
+  // A pile of a thousand copies names three of them and counts the rest.
+  constexpr size_t kNamed = 3;
+  const size_t named = result.open_meshes.size() <= kNamed + 1 ? result.open_meshes.size() : kNamed;
+  for (size_t i = 0; i < named; ++i) text += (i == 0 ? "'" : ", '") + result.open_meshes[i] + "'";
+  if (named < result.open_meshes.size()) text += " and " + std::to_string(result.open_meshes.size() - named) + " more";
+  return text + " (not watertight; inside by winding number)";
+}
+
 long frame_step(int frame, double fps, double dt) { return std::lround((frame - 1) / (fps * dt)); }
 
 RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
@@ -139,6 +151,8 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   Progress progress(global, "run", static_cast<int>(selected.size()));
   RunResult result;
   result.quality.margin = scene.world.contact.margin;
+  for (const SceneBody& body : scene.bodies)
+    if (body.open_mesh) result.open_meshes.push_back(body.name);
   size_t next = 0;  // index into selected
   long inverted_steps = 0;
   const long grace_steps = std::max(1L, static_cast<long>(std::ceil(kInversionGrace / dt)));

@@ -49,7 +49,13 @@ struct RunResult {
   bool failed = false;
   std::string message;      // what failed
   SolveQuality quality;
+  std::vector<std::string> open_meshes;  // bodies from mesh files that are not watertight, scene order
 };
+
+// Every warning of a run, for the summary line and run.json: the solve's
+// (describe_warnings) and the open meshes ("open mesh: 'cup' (inside by
+// winding number)"); empty when there is none.
+std::string describe_run_warnings(const RunResult& result);
 
 // Writes scene.json first, then frames, stats and run.json into job.output_dir
 // (created). A failed simulation (or, with job.strict, an unconverged solve)

@@ -8,20 +8,11 @@
 #include <vector>
 
 #include "core/error.h"
+#include "sim/geometry/winding_number.h"
 
 namespace recoil::sim {
 
 namespace {
-
-// Five directions away from the lattice axes and diagonals (an odd count so
-// the vote cannot tie).
-const std::array<Eigen::Vector3d, 5>& vote_directions() {
-  static const std::array<Eigen::Vector3d, 5> dirs = {
-      Eigen::Vector3d(0.5362, 0.7213, 0.4385).normalized(),  Eigen::Vector3d(-0.6231, 0.2517, 0.7405).normalized(),
-      Eigen::Vector3d(0.3114, -0.8427, 0.4392).normalized(), Eigen::Vector3d(-0.4471, -0.3119, -0.8386).normalized(),
-      Eigen::Vector3d(0.8817, 0.1733, -0.4389).normalized()};
-  return dirs;
-}
 
 // Corner c of a cell: bit 0 -> +x, bit 1 -> +y, bit 2 -> +z. The six tets walk
 // from corner 0 to corner 7 along the three axes in every order.
@@ -50,14 +41,9 @@ bool triangle_overlaps_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, c
   return true;
 }
 
-bool inside_by_rays(const TriangleScene& scene, const Eigen::Vector3d& point) {
-  int inside_votes = 0;
-  for (const Eigen::Vector3d& d : vote_directions())
-    if (scene.all_hits(point, d).size() % 2 == 1) ++inside_votes;
-  return 2 * inside_votes > static_cast<int>(vote_directions().size());
-}
+bool inside_by_winding_number(double winding_number) { return std::abs(winding_number) > 0.5; }
 
-TetMesh tetrahedralize(EmbreeDevice& device, const TriMesh& surface, int resolution, TetrahedralizeStats* stats) {
+TetMesh tetrahedralize(const TriMesh& surface, int resolution, TetrahedralizeStats* stats) {
   if (surface.empty()) throw bad_input("tetrahedralize: the surface has no triangles");
   if (resolution < 1 || resolution > 512)
     throw bad_input("tets.resolution must be in [1, 512], got " + std::to_string(resolution));
@@ -98,15 +84,17 @@ TetMesh tetrahedralize(EmbreeDevice& device, const TriMesh& surface, int resolut
         }
   }
 
-  // The remaining cells: inside when their centre votes inside.
-  TriangleScene scene(device, surface.vertices, surface.triangles, /*dynamic=*/false);
+  // The remaining cells: inside by the winding number at their centre. A
+  // centre is at least h/2 from every triangle (none overlaps its cell), so
+  // the tree's far-field clusters are never the ones it lies against.
+  const WindingNumberTree winding(surface);
   int inside = 0;
   for (int k = 0; k < n[2]; ++k)
     for (int j = 0; j < n[1]; ++j)
       for (int i = 0; i < n[0]; ++i) {
         char& kept = keep[static_cast<size_t>(cell_id(i, j, k))];
         if (kept) continue;
-        if (inside_by_rays(scene, origin + h * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5))) {
+        if (inside_by_winding_number(winding(origin + h * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5)))) {
           kept = 2;
           ++inside;
         }

@@ -146,6 +146,8 @@ TEST(SceneFile, BadSceneCorpusGivesExit2NamingFileAndPointer) {
       {"negative-scale.json", {"/bodies/1/transform/scale: must be > 0, got -1"}},
       {"top-level-typo.json", {"/simulaton: unknown key", "did you mean \"simulation\"?"}},
       {"fps-zero.json", {"/render/fps: must be in (0, 1000], got 0"}},
+      {"up-axis.json", {"/bodies/1/up: unknown up axis \"+W\"", "+X, -X, +Y, -Y, +Z or -Z"}},
+      {"up-primitive.json", {"/bodies/1/up: only for mesh files"}},
   };
   const fs::path out = scratch_dir("bad_scenes");
   for (const BadScene& bad : corpus) {

@@ -1,0 +1,99 @@
+// Open meshes end to end: a box with its top face missing (and the assimp
+// corpus's sphere with a hole) is reported open by `info`, drops without
+// error, and the run's summary and run.json name it; `info MESH` prints the
+// tetrahedra a mesh would get.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/cli/box_mesh_file.h"
+#include "tests/test_support.h"
+
+namespace recoil::test {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+TEST(OpenMesh, InfoReportsItOpenWithTheTetsOfTheClosedBox) {
+  const fs::path dir = scratch_dir("open_info");
+  const Eigen::Vector3d lo(-0.1, -0.1, -0.1), hi(0.1, 0.1, 0.1);
+  const fs::path open = write_box_off(dir / "openbox.off", lo, hi, /*skip_top=*/true);
+  const fs::path closed = write_box_off(dir / "box.off", lo, hi);
+  const CommandResult r = run_recoil("info --json " + shell_quote(open));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json info = json::parse(r.out);
+  EXPECT_FALSE(info["watertight"].get<bool>());
+  EXPECT_EQ(info["boundary_edges"], 4);
+  EXPECT_TRUE(info["volume"].is_null());
+  // The missing face changes nothing inside: the cells below the hole still
+  // see the rest of the box over more than half the sphere.
+  const CommandResult c = run_recoil("info --json " + shell_quote(closed));
+  ASSERT_EQ(c.exit_code, 0) << c.err;
+  EXPECT_EQ(info["tetrahedra"], json::parse(c.out)["tetrahedra"]);
+  EXPECT_EQ(info["tetrahedra"]["tets"], 8 * 8 * 8 * 6);
+
+  const CommandResult text = run_recoil("info " + shell_quote(open));
+  EXPECT_EQ(text.exit_code, 0);
+  EXPECT_NE(text.out.find("watertight   no: open mesh (4 boundary"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("inside by winding number"), std::string::npos) << text.out;
+}
+
+TEST(OpenMesh, InfoPrintsTheTetsAtTheDefaultAndAGivenResolution) {
+  const fs::path dir = scratch_dir("open_info_tets");
+  // 0.1 x 0.1 x 0.4: at 8 cells along the longest side the lattice is 2 x 2 x 8
+  // cells (3 x 3 x 9 nodes), six tets a cell; at 16 it is 4 x 4 x 16.
+  const fs::path tall = write_box_off(dir / "tall.off", Eigen::Vector3d(-0.05, -0.05, 0.0), Eigen::Vector3d(0.05, 0.05, 0.4));
+  const CommandResult text = run_recoil("info " + shell_quote(tall));
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("tetrahedra   192 tets, 81 nodes at resolution 8 (cells of 0.05 m)"), std::string::npos)
+      << text.out;
+  const CommandResult fine = run_recoil("info --json --resolution 16 " + shell_quote(tall));
+  ASSERT_EQ(fine.exit_code, 0) << fine.err;
+  const json tets = json::parse(fine.out)["tetrahedra"];
+  EXPECT_EQ(tets["resolution"], 16);
+  EXPECT_EQ(tets["tets"], 4 * 4 * 16 * 6);
+  EXPECT_EQ(tets["nodes"], 5 * 5 * 17);
+  EXPECT_NEAR(tets["cell_size"].get<double>(), 0.025, 1e-6);
+
+  EXPECT_EQ(run_recoil("info --resolution 0 " + shell_quote(tall)).exit_code, 2);
+  const CommandResult scene =
+      run_recoil("info --resolution 4 " + shell_quote(source_path("assets/scenes/bunny-drop.json")));
+  EXPECT_EQ(scene.exit_code, 2);
+  EXPECT_NE(scene.err.find("--resolution applies to a mesh"), std::string::npos) << scene.err;
+}
+
+TEST(OpenMesh, DropRunsAndTheSummaryNamesTheOpenMesh) {
+  const fs::path dir = scratch_dir("open_drop");
+  const fs::path open = write_box_off(dir / "openbox.off", Eigen::Vector3d(-0.1, -0.1, -0.1),
+                                      Eigen::Vector3d(0.1, 0.1, 0.1), /*skip_top=*/true);
+  const CommandResult r = run_recoil("drop " + shell_quote(open) + " --seconds 0.2 --no-render -o " + shell_quote(dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("warning: open mesh: 'openbox' (not watertight; inside by winding number)"), std::string::npos)
+      << r.err;
+  const json run = json::parse(file_bytes(dir / "out" / "run.json"));
+  EXPECT_EQ(run["warnings"]["open_meshes"], json::array({"openbox"}));
+  EXPECT_NE(run["warnings"]["summary"].get<std::string>().find("open mesh"), std::string::npos);
+  // -q hides the summary line, except for its warnings.
+  const CommandResult quiet = run_recoil("drop " + shell_quote(open) + " -q --seconds 0.1 --no-render -o " + shell_quote(dir / "q"));
+  EXPECT_NE(quiet.err.find("open mesh: 'openbox'"), std::string::npos) << quiet.err;
+  // The resolved scene says so too.
+  const CommandResult info = run_recoil("info --json " + shell_quote(dir / "out" / "scene.json"));
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const json bodies = json::parse(info.out)["bodies"];
+  ASSERT_EQ(bodies.size(), 2u);
+  EXPECT_TRUE(bodies[1]["open_mesh"].get<bool>());
+  EXPECT_GT(bodies[1]["tets"].get<int>(), 0);
+}
+
+TEST(OpenMesh, AssimpSphereWithAHoleDrops) {
+  const fs::path sphere = "/usr/share/assimp/models/STL/sphereWithHole.stl";
+  if (!fs::exists(sphere)) GTEST_SKIP() << "assimp-testmodels is not installed";
+  const fs::path dir = scratch_dir("open_sphere");
+  const CommandResult info = run_recoil("info --json " + shell_quote(sphere));
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  EXPECT_FALSE(json::parse(info.out)["watertight"].get<bool>());
+  const CommandResult r = run_recoil("drop " + shell_quote(sphere) + " --seconds 0.2 --no-render -o " + shell_quote(dir));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("open mesh: 'sphereWithHole'"), std::string::npos) << r.err;
+}
+
+}  // namespace recoil::test
