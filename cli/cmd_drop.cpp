@@ -43,18 +43,29 @@ void add_drop_command(CLI::App& app, const GlobalOptions& global, Action& action
   cmd->add_option("--seconds", options->drop.seconds, "Simulated seconds")
       ->check(CLI::Range(0.0, 3600.0))->capture_default_str();
   add_up_option(*cmd, options->drop.up);
+  CLI::Option* triangles =
+      cmd->add_option("--collision-triangles", options->drop.collision_triangles,
+                      "Collision surface budget per body (0: the mesh itself; default: from the tet lattice)")
+          ->check(CLI::Range(0, 100000000));
+  cmd->add_option("--collision-edge", options->drop.collision_edge,
+                  "Collision surface tiled at this edge length, m (default: a quarter lattice cell, >= 2 margins)")
+      ->check(CLI::PositiveNumber)
+      ->excludes(triangles);
   cmd->add_option("--save-scene", options->save_scene, "Also write the scene built, to edit and rerun with `recoil run`");
   add_run_options(*cmd, options->run);
   cmd->footer(
       "Meshes between 5 cm and 2 m keep their size; others are scaled to 30 cm. --up names the\n"
       "mesh files' up axis (recorded as each body's \"up\" in the scene): a Z-up STL stands as\n"
       "modelled with --up +Z. Open meshes (holes, flipped faces) work: inside and outside are\n"
-      "decided by the winding number, and the summary names them.\n\n"
+      "decided by the winding number, and the summary names them. A mesh finer than the\n"
+      "simulation needs collides through a simplified copy (see `recoil info` on the saved scene)\n"
+      "while the mesh itself is drawn; --collision-triangles and --collision-edge set its size.\n\n"
       "Examples:\n"
       "  recoil drop assets/meshes/bunny.obj\n"
       "  recoil drop assets/meshes/bunny.obj --count 8 --material jelly --seconds 4\n"
       "  recoil drop part.stl --material rigid --friction 0.3 --save-scene part-drop.json\n"
-      "  recoil drop bracket.stl --up +Z          # exported Z-up: stands as in the CAD tool\n");
+      "  recoil drop bracket.stl --up +Z          # exported Z-up: stands as in the CAD tool\n"
+      "  recoil drop statue.ply --collision-triangles 4000   # a 2M-triangle scan, 4000 for contact\n");
   cmd->callback([options, &global, &action] {
     action = [options, &global] { return run_drop(*options, global); };
   });

@@ -103,6 +103,9 @@ nlohmann::json build_drop_scene(const DropSettings& settings) {
                            {"up", to_string(settings.up)},
                            {"friction", settings.friction},
                            {"transform", {{"position", vec(position)}, {"rotation", vec(rotation)}, {"scale", s.scale}}}};
+    if (settings.collision_triangles == 0) body["collision"] = "mesh";
+    else if (settings.collision_triangles > 0) body["collision"] = {{"triangles", settings.collision_triangles}};
+    else if (settings.collision_edge > 0.0) body["collision"] = {{"edge_length", settings.collision_edge}};
     if (settings.material == "rigid") {
       body["type"] = "rigid";
       body["density"] = 1000;

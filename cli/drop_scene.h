@@ -20,6 +20,10 @@ struct DropSettings {
   double seconds = 3.0;           // simulated
   unsigned seed = 1;              // of the pile's jitter and orientations
   UpAxis up = UpAxis::pos_y;      // of every mesh file; recorded in each body's "up"
+  // Every body's collision surface: at most this many triangles (0: the mesh
+  // itself), or tiled at this edge length (m); neither (-1, 0): the default.
+  int collision_triangles = -1;
+  double collision_edge = 0.0;
 };
 
 // A scene file document (SPEC.md section 3) with absolute mesh paths. Throws

@@ -9,6 +9,7 @@
 #include "sim/collision/exact_distance.h"
 #include "sim/geometry/mesh_simplify.h"
 #include "sim/geometry/mesh_stats.h"
+#include "sim/geometry/winding_number.h"
 
 namespace recoil::sim {
 
@@ -105,9 +106,15 @@ CollisionProxy make_collision_proxy(EmbreeDevice& device, const TriMesh& mesh, i
   TriangleScene scene(device, out.surface.vertices, out.surface.triangles, /*dynamic=*/true);
   std::vector<int> near;
   for (int pass = 0; pass < kOffsetPasses; ++pass) {
+    // Only a vertex outside the simplified volume counts (an inner part of a
+    // many-shelled CAD model sits inside it whatever its normal says); the
+    // winding number decides, for the vertices that would raise the offset.
+    const WindingNumberTree winding(out.surface);
     double outside = 0.0;
-    for (int v = 0; v < mesh.num_vertices(); ++v)
-      outside = std::max(outside, mesh_normals.row(v).dot(from_nearest(out.surface, scene, vertex_of(mesh, v), radius, near)));
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+      const double along = mesh_normals.row(v).dot(from_nearest(out.surface, scene, vertex_of(mesh, v), radius, near));
+      if (along > outside && std::abs(winding(vertex_of(mesh, v))) < 0.5) outside = along;
+    }
     if (!(outside > kSettledShare * out.deviation)) break;
     out.deviation += outside;
     out.surface.vertices += outside * normals;

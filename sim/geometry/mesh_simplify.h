@@ -12,8 +12,9 @@ struct SimplifiedMesh {
   Eigen::VectorXi source;        // #V of `mesh`: the input vertex each one is
 };
 
-// Collapses edges until at most `target_triangles` remain (or no collapse is
-// left that keeps the topology; borders of open meshes stay where they are).
+// Collapses edges until at most `target_triangles` remain; when borders (holes,
+// separate shells) stop it at more than six times the target, clusters vertices
+// instead (meshopt_simplifySloppy), which ignores topology.
 SimplifiedMesh simplify_mesh(const TriMesh& mesh, int target_triangles);
 
 }  // namespace recoil::sim
