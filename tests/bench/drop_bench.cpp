@@ -1,0 +1,108 @@
+// `recoil drop` on meshes of increasing size, same material, tet resolution
+// and duration: ms per simulated step and peak memory against the bunny's,
+// and the candidates offered while the body still falls freely. Each drop
+// runs in its own process (the CLI), so its peak resident memory is its own.
+#include <fcntl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "sim/geometry/mesh_import.h"
+#include "sim/geometry/primitives.h"
+#include "tests/bench/bench.h"
+
+namespace recoil::bench {
+namespace {
+
+namespace fs = std::filesystem;
+
+void write_off(const sim::TriMesh& mesh, const fs::path& path) {
+  std::ofstream out(path);
+  out << "OFF\n" << mesh.num_vertices() << " " << mesh.num_triangles() << " 0\n";
+  out.precision(9);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    out << mesh.vertices(v, 0) << " " << mesh.vertices(v, 1) << " " << mesh.vertices(v, 2) << "\n";
+  for (int f = 0; f < mesh.num_triangles(); ++f)
+    out << "3 " << mesh.triangles(f, 0) << " " << mesh.triangles(f, 1) << " " << mesh.triangles(f, 2) << "\n";
+}
+
+struct DropRun {
+  bool ok = false;
+  double ms_per_step = 0.0, build_ms = 0.0, peak_mib = 0.0;
+  long steps = 0;
+  int free_fall_contacts = 0;  // summed over the frames before the first contact
+};
+
+DropRun run_drop(const fs::path& mesh, const fs::path& out) {
+  DropRun r;
+  const pid_t child = fork();
+  if (child == 0) {
+    const int null = ::open("/dev/null", O_WRONLY);
+    if (null >= 0) dup2(null, 2);
+    execl(RECOIL_BINARY, RECOIL_BINARY, "drop", mesh.c_str(), "--seconds", "0.3", "--no-render", "-q", "-o", out.c_str(),
+          static_cast<char*>(nullptr));
+    _exit(127);
+  }
+  int status = 0;
+  rusage usage{};
+  if (child < 0 || wait4(child, &status, 0, &usage) != child || !WIFEXITED(status) || WEXITSTATUS(status) != 0) return r;
+  r.peak_mib = static_cast<double>(usage.ru_maxrss) / 1024.0;
+  const nlohmann::json run = nlohmann::json::parse(std::ifstream(out / "run.json"));
+  r.steps = run["steps"].get<long>();
+  r.ms_per_step = run["timings_ms"]["step"].get<double>() / static_cast<double>(std::max(r.steps, 1L));
+  r.build_ms = run["timings_ms"]["build"].get<double>();
+  std::ifstream stats(out / "stats.jsonl");
+  std::string line;
+  double start_height = 0.0;
+  while (std::getline(stats, line)) {
+    // Frames until the body has fallen within 1 cm of the ground (drop
+    // leaves a 0.3 m gap): the ground's own candidates start there.
+    const nlohmann::json frame = nlohmann::json::parse(line);
+    const double height = frame["bodies"][0]["com"][1].get<double>();
+    if (frame["frame"].get<int>() == 1) start_height = height;
+    if (start_height - height > 0.29) break;
+    r.free_fall_contacts += frame["contacts"].get<int>();
+  }
+  r.ok = true;
+  return r;
+}
+
+void drop_bench() {
+  const fs::path dir = fs::temp_directory_path() / ("recoil_drop_bench_" + std::to_string(::getpid()));
+  fs::create_directories(dir);
+  std::vector<std::pair<std::string, fs::path>> meshes = {
+      {"bunny (assets)", fs::path(RECOIL_SOURCE_DIR) / "assets/meshes/bunny.obj"},
+      {"human.zae (assimp-testmodels)", "/usr/share/assimp/models/Collada/human.zae"}};
+  for (int level : {6, 7, 8}) {
+    const fs::path path = dir / ("sphere" + std::to_string(level) + ".off");
+    write_off(sim::make_sphere(0.15, level), path);
+    meshes.emplace_back("sphere, subdivision " + std::to_string(level), path);
+  }
+  BenchTable table("drop, 0.3 s, soft, resolution 8 (each in its own process)",
+                   {"mesh", "triangles", "ms/step", "x bunny", "build ms", "peak MiB", "free-fall candidates"});
+  double bunny_ms = 0.0;
+  for (const auto& [name, path] : meshes) {
+    if (!fs::exists(path)) continue;
+    const DropRun r = run_drop(path, dir / fs::path(path).stem());
+    if (!r.ok) {
+      table.add_row({name, "", "failed"});
+      continue;
+    }
+    if (bunny_ms == 0.0) bunny_ms = r.ms_per_step;
+    table.add_row({name, std::to_string(sim::import_surface(path).num_triangles()), fixed(r.ms_per_step, 2), fixed(r.ms_per_step / bunny_ms, 2), fixed(r.build_ms, 0),
+                   fixed(r.peak_mib, 0), std::to_string(r.free_fall_contacts)});
+  }
+  table.print();
+  std::error_code ec;
+  fs::remove_all(dir, ec);
+}
+
+Register drop_registration("drop", drop_bench);
+
+}  // namespace
+}  // namespace recoil::bench
