@@ -227,6 +227,25 @@ TEST(RunCommand, UnconvergedSolvesAreReportedAndStrictFailsOnThem) {
   EXPECT_EQ(clean.err, "");
 }
 
+// --collision-triangles reaches the scene (and so a rerun), and `info` tells
+// the drawn mesh from what contact sees.
+TEST(DropCommand, CollisionBudgetIsRecordedAndReported) {
+  const fs::path dir = scratch_dir("drop_collision");
+  const fs::path bunny = source_path("assets/meshes/bunny.obj");
+  const CommandResult r = run_recoil("drop " + shell_quote(bunny) + " --collision-triangles 800 --frames 1-2 --no-render -q -o " +
+                                     shell_quote(dir / "out") + " --save-scene " + shell_quote(dir / "drop.json"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json scene = json::parse(file_bytes(dir / "drop.json"));
+  EXPECT_EQ(scene["bodies"][1]["collision"]["triangles"], 800);
+  const CommandResult info = run_recoil("info --json " + shell_quote(dir / "drop.json"));
+  ASSERT_EQ(info.exit_code, 0) << info.err;
+  const json body = json::parse(info.out)["bodies"][1];
+  EXPECT_EQ(body["surface_triangles"], 3674);
+  EXPECT_LE(body["collision_triangles"].get<int>(), 800);
+  EXPECT_GT(body["collision_offset"].get<double>(), 0.0);
+  EXPECT_EQ(run_recoil("drop " + shell_quote(bunny) + " --collision-triangles 800 --collision-edge 0.01").exit_code, 2);
+}
+
 TEST(DropCommand, SeededPileReproducesAndSavesASceneRunAccepts) {
   const fs::path a = scratch_dir("drop_a"), b = scratch_dir("drop_b");
   const fs::path bunny = source_path("assets/meshes/bunny.obj");
