@@ -1,5 +1,5 @@
 // `recoil compare ACTUAL REF`: visual regression of frames against references
-// (SPEC.md section 6). Exit 0 within tolerance, 1 beyond it, 2 bad input.
+//. Exit 0 within tolerance, 1 beyond it, 2 bad input.
 
 #include <algorithm>
 #include <cstdio>

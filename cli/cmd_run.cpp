@@ -17,7 +17,7 @@ struct RunCommandOptions {
 void add_run_command(CLI::App& app, const GlobalOptions& global, Action& action) {
   auto options = std::make_shared<RunCommandOptions>();
   CLI::App* cmd = app.add_subcommand("run", "Simulate a scene file and render its frames");
-  cmd->add_option("SCENE", options->scene, "Scene file (JSON, SPEC.md section 3)")->required();
+  cmd->add_option("SCENE", options->scene, "Scene file (JSON; every key in docs/scene-format.md)")->required();
   add_run_options(*cmd, options->run);
   cmd->footer(
       "Writes DIR/frame_0001.png ..., DIR/stats.jsonl (one JSON object per frame), DIR/scene.json\n"

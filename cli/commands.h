@@ -1,8 +1,8 @@
 #pragma once
 // The subcommands of the recoil executable. Each add_*_command registers one
 // CLI11 subcommand; when the user picks it, its callback stores the work to do
-// in `action`, which main() runs inside the one error handler (exit codes:
-// SPEC.md section 5).
+// in `action`, which main() runs inside the one error handler (exit codes in
+// the README).
 #include <CLI/CLI.hpp>
 #include <functional>
 

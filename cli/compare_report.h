@@ -1,6 +1,5 @@
 #pragma once
-// The self-contained HTML page of `recoil compare --report` (SPEC.md section
-// 6): one file a reviewer can open or attach to a CI run, with every image
+// The self-contained HTML page of `recoil compare --report`: one file a reviewer can open or attach to a CI run, with every image
 // embedded as a base64 data URI so nothing else needs to travel with it.
 #include <cstdint>
 #include <filesystem>

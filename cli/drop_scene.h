@@ -26,7 +26,7 @@ struct DropSettings {
   double collision_edge = 0.0;
 };
 
-// A scene file document (SPEC.md section 3) with absolute mesh paths. Throws
+// A scene file document with absolute mesh paths. Throws
 // bad_input naming the mesh for unreadable or empty meshes.
 nlohmann::json build_drop_scene(const DropSettings& settings);
 

@@ -2,7 +2,7 @@
 // Atomic file output (compare's HTML report and --update copies, run's
 // scene.json and run.json, drop's --save-scene): write beside the target,
 // then rename, so a reader or a crash never leaves a half-written file behind
-// (SPEC.md section 5).
+//.
 #include <filesystem>
 #include <fstream>
 #include <string>

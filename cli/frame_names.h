@@ -1,6 +1,6 @@
 #pragma once
 // Frame file names: frame_0001.png ... with more digits when a sequence
-// needs them (SPEC.md section 4). Frame numbers start at 1.
+// needs them. Frame numbers start at 1.
 #include <string>
 
 namespace recoil::cli {

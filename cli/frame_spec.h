@@ -1,5 +1,5 @@
 #pragma once
-// `--frames SPEC` (SPEC.md section 2): "1-100", "1-100:5", "1,3,7-9".
+// `--frames SPEC`: "1-100", "1-100:5", "1,3,7-9".
 // Frame numbers start at 1.
 #include <string>
 #include <vector>

@@ -1,5 +1,5 @@
 #pragma once
-// One line of stats.jsonl (SPEC.md section 4): the step reports of a frame
+// One line of stats.jsonl: the step reports of a frame
 // summed (solver work, contacts) or maximised (penetration, residual), and
 // the dynamic bodies' state at the frame time, in scene order.
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 // recoil: the command-line entry point. Parses the command line, runs the
 // chosen subcommand and turns every failure into one `recoil: error:` line
-// and the exit code of SPEC.md section 5.
+// and the exit code (README, "Exit codes").
 #include <iostream>
 
 #include "cli/commands.h"

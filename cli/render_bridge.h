@@ -1,6 +1,6 @@
 #pragma once
 // Where sim/ meets render/: copies simulation surfaces into the renderer's
-// plain RenderScene (ARCHITECTURE.md, data flow). Nothing else in cli/ converts.
+// plain RenderScene. Nothing else in cli/ converts.
 #include "render/render_scene.h"
 #include "sim/geometry/tri_mesh.h"
 

@@ -1,5 +1,5 @@
 #pragma once
-// The render options shared by `run`, `drop` and `turntable` (SPEC.md section 2),
+// The render options shared by `run`, `drop` and `turntable`,
 // parsed from the command line into render::RenderSettings.
 #include <CLI/CLI.hpp>
 #include <optional>

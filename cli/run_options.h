@@ -1,5 +1,5 @@
 #pragma once
-// The options `run` and `drop` share (SPEC.md section 2): output folder, frame
+// The options `run` and `drop` share: output folder, frame
 // selection, solver, statistics, video, resume, threads, and the render
 // options. Options given on the command line override the scene's values;
 // the overrides are recorded in the resolved scene (DIR/scene.json).

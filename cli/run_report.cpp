@@ -36,9 +36,15 @@ void RunReport::add_step(const sim::StepReport& r) {
   m_iterations += r.solver_iterations;
   m_restarts += r.solver_restarts;
   m_contacts += r.contacts;
+  ++m_steps;
   if (!r.solver_converged) ++m_not_converged;
+  m_worst_kkt = std::max(m_worst_kkt, r.solver_kkt);
   m_max_residual = std::max(m_max_residual, r.solver_residual);
   m_max_penetration = std::max(m_max_penetration, r.max_penetration);
+}
+
+SolveQuality RunReport::solve_quality(double margin) const {
+  return {m_steps, m_not_converged, m_worst_kkt, m_max_penetration, margin};
 }
 
 void RunReport::add_frame(const FrameTimes& times) { timings.render += times.render; }

@@ -1,5 +1,5 @@
 #pragma once
-// DIR/run.json (SPEC.md section 4): version and build, wall-clock time per
+// DIR/run.json: version and build, wall-clock time per
 // phase, solver totals and the exit status of a run.
 #include <nlohmann/json.hpp>
 
@@ -10,6 +10,17 @@ namespace recoil::cli {
 
 struct RunJob;
 struct RunResult;
+
+// How well the contact solves went over a run: what the end-of-run summary
+// warns about and --strict fails on.
+struct SolveQuality {
+  long steps = 0;
+  long not_converged = 0;          // steps whose solve stopped at its iteration cap
+  double worst_kkt = 0.0;          // largest KKT residual of a returned solution, m/s
+  double max_penetration = 0.0;    // m
+  double margin = 0.0;             // the scene's contact margin, m
+  bool penetrated_margin() const { return max_penetration > margin; }
+};
 
 class RunReport {
  public:
@@ -25,14 +36,16 @@ class RunReport {
   void add_step(const sim::StepReport& report);
   void add_frame(const FrameTimes& times);
   void finish(const sim::World& world, const RunResult& result, double total_ms);
+  // The steps added so far, against the scene's contact margin (m).
+  SolveQuality solve_quality(double margin) const;
   nlohmann::json json() const;
 
   Timings timings;
 
  private:
   nlohmann::json m_head;
-  long m_iterations = 0, m_restarts = 0, m_contacts = 0, m_not_converged = 0;
-  double m_max_residual = 0.0, m_max_penetration = 0.0;
+  long m_steps = 0, m_iterations = 0, m_restarts = 0, m_contacts = 0, m_not_converged = 0;
+  double m_max_residual = 0.0, m_max_penetration = 0.0, m_worst_kkt = 0.0;
   nlohmann::json m_tail;
 };
 

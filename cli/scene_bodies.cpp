@@ -340,7 +340,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     // spacing for a cube, in place of the primitive's default 8: a surface
     // finer than its lattice gives several nearly dependent contact rows per
     // touching lattice cell, which the contact solver cannot hold together
-    // (the jelly-stack example; README, "not passing yet"). Coarser than the
+    // (the jelly-stack example; docs/solver-log.md). Coarser than the
     // lattice it would not do either: a face held only at its corners sags
     // through what it rests on (the validation jelly cubes did).
     if (geometry.box && d.tets.empty()) d.mesh = sim::make_box(*geometry.box, d.resolution);

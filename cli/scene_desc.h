@@ -1,5 +1,5 @@
 #pragma once
-// SceneDesc: a scene file (SPEC.md section 3) as plain data, parsed apart from
+// SceneDesc: a scene file as plain data, parsed apart from
 // running it (pbrt style): the physics as a sim::WorldDesc, the look as
 // render options and a camera, and the bodies in scene order with the colour
 // and opacity they are drawn with.

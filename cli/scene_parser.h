@@ -1,5 +1,5 @@
 #pragma once
-// Scene file v1 (SPEC.md section 3) -> SceneDesc. Every error is a
+// Scene file v1 -> SceneDesc. Every error is a
 // recoil::Error(bad_input) naming the file and the JSON pointer, e.g.
 //   scene.json: /bodies/2/material/poisson_ratio: must be in [0, 0.5), got 0.7
 // and syntax errors give the file, line and column.

@@ -150,7 +150,6 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
 
   Progress progress(global, "run", static_cast<int>(selected.size()));
   RunResult result;
-  result.quality.margin = scene.world.contact.margin;
   for (const SceneBody& body : scene.bodies)
     if (body.open_mesh) result.open_meshes.push_back(body.name);
   size_t next = 0;  // index into selected
@@ -165,10 +164,6 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       const sim::StepReport r = world->step();
       acc.add(r);
       report.add_step(r);
-      ++result.quality.steps;
-      if (!r.solver_converged) ++result.quality.not_converged;
-      result.quality.worst_kkt = std::max(result.quality.worst_kkt, r.solver_kkt);
-      result.quality.max_penetration = std::max(result.quality.max_penetration, r.max_penetration);
       if (r.status == sim::StepStatus::inverted) ++inverted_steps;
       else if (r.status == sim::StepStatus::ok) inverted_steps = 0;
       if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup) {
@@ -216,6 +211,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   if (video && !result.failed) video->finish();
   report.timings.encode = writer ? writer->encode_ms() : 0.0;
   result.steps = world->counters().steps;
+  result.quality = report.solve_quality(scene.world.contact.margin);
   if (job.strict && !result.failed && result.quality.not_converged > 0) {
     result.failed = true;
     result.message = scene_error(Error(ErrorKind::sim_failed, "--strict: " + describe_warnings(result.quality)), scene)

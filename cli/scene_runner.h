@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/run_report.h"
 #include "cli/scene_desc.h"
 #include "core/error.h"
 
@@ -24,18 +25,6 @@ struct RunJob {
   bool resume = false;                    // keep frames already on disk
   bool strict = false;                    // a solve that did not converge fails the run (exit 3)
   std::string command;                    // the command line, for run.json
-};
-
-// How well the contact solves went over a run: what the end-of-run summary
-// warns about and --strict fails on.
-struct SolveQuality {
-  long steps = 0;
-  long not_converged = 0;          // steps whose solve stopped at its iteration cap
-  double worst_kkt = 0.0;          // largest KKT residual of a returned solution, m/s
-  double max_penetration = 0.0;    // m
-  double margin = 0.0;             // the scene's contact margin, m
-  bool penetrated_margin() const { return max_penetration > margin; }
-  bool clean() const { return not_converged == 0 && !penetrated_margin(); }
 };
 
 // "12 of 750 solves did not converge (worst KKT residual 3.1e-04 m/s); ..."

@@ -1,6 +1,6 @@
 #pragma once
 // recoil::Error: bad input or a broken environment, thrown and caught only in
-// main(), which turns its kind into the exit code of SPEC.md section 5.
+// main(), which turns its kind into the exit code (README, "Exit codes").
 // Bugs use RECOIL_CHECK (core/check.h) instead; numerical trouble during a
 // simulation is a status in the step report, never an exception.
 #include <stdexcept>

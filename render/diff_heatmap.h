@@ -1,6 +1,6 @@
 #pragma once
-// Heat map of the per-pixel difference between two images (SPEC.md section 6,
-// `compare --diff`): what a reviewer looks at to see where a frame changed.
+// Heat map of the per-pixel difference between two images (`compare
+// --diff`): what a reviewer looks at to see where a frame changed.
 #include <cstddef>  // render/image.h uses size_t without including it
 
 #include "render/image.h"

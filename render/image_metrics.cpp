@@ -25,7 +25,7 @@ std::string size_text(const Image& image) {
   return std::to_string(image.width) + "x" + std::to_string(image.height);
 }
 
-// SSIM window (SPEC.md section 6): sigma 1.5 truncated at 3.5 sigma; scipy's
+// SSIM window: sigma 1.5 truncated at 3.5 sigma; scipy's
 // gaussian_filter uses radius int(truncate * sigma + 0.5) = 5.
 constexpr double ssim_sigma = 1.5;
 constexpr int ssim_radius = ssim_window / 2;

@@ -1,5 +1,5 @@
 #pragma once
-// Image difference metrics for visual regression (SPEC.md section 6).
+// Image difference metrics for visual regression.
 //
 // Both images are first composited over black (straight alpha, so a pixel's
 // encoded value becomes channel/255 * alpha/255 in [0,1]); every metric below

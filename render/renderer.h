@@ -1,6 +1,6 @@
 #pragma once
 // Renderer: draws a RenderScene from a Camera into an RGBA8 Image with a
-// film-style studio look (SPEC.md section 8): three-point lighting, a
+// film-style studio look: three-point lighting, a
 // PCF-shadowed key light, a fading ground with a soft grid, smooth normals
 // recomputed each frame, per-mesh colour and opacity (transparent meshes
 // blended back to front), MSAA, sRGB-correct output.

@@ -1,6 +1,6 @@
 #pragma once
 // sim::World: built once from a plain WorldDesc, then stepped. A step is a
-// short list of timed stages (ARCHITECTURE.md): assemble -> collide -> solve
+// short list of timed stages: assemble -> collide -> solve
 // -> integrate -> check health. Numerical trouble is reported in the
 // StepReport, never thrown.
 //
@@ -59,7 +59,7 @@ struct StepReport {
   double solver_kkt = 0.0;     // contact stage: KKT residual of the returned solution, m/s (sim/solver/kkt_residual.h)
   bool solver_converged = true;
   int inverted_tets = 0;       // over all bodies
-  // Contact stage (zero without candidates); SPEC.md section 4 sums these per frame.
+  // Contact stage (zero without candidates); stats.jsonl sums these per frame.
   int contacts = 0;            // constraint candidates given to the solver
   int active = 0, sticking = 0, sliding = 0;
   int solver_restarts = 0;

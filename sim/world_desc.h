@@ -1,7 +1,7 @@
 #pragma once
 // WorldDesc: the plain description a World is built from (Box2D-style
 // definition structs with defaults). The scene parser in cli/ fills it; tests
-// and benchmarks build it directly. SPEC.md section 3 is the user-facing form.
+// and benchmarks build it directly. Scene files are the user-facing form.
 #include <Eigen/Core>
 #include <string>
 #include <vector>
@@ -13,7 +13,7 @@
 
 namespace recoil::sim {
 
-// SPEC.md `friction`: the coefficient between two bodies is the geometric
+// A scene's `friction`: the coefficient between two bodies is the geometric
 // mean of theirs (static with static, kinetic with kinetic).
 struct FrictionDesc {
   double static_coefficient = 0.5;

@@ -1,5 +1,5 @@
 #pragma once
-// Contact candidates for one step, accelerated by Embree (METHOD.md section 6).
+// Contact candidates for one step, accelerated by Embree.
 //
 // One EmbreeDevice per detector (one detector per World). Per surface it keeps
 // a dynamic triangle scene over x0 and a box scene over its edges; both are

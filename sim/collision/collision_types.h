@@ -3,7 +3,7 @@
 // World, FEM and rigid-body code: the World copies each body's collision
 // surface into a CollisionSurface, and the contact code maps the surface-vertex
 // weights of each ContactCandidate to DoFs (embedding weights for FEM bodies,
-// v + w x r for rigid ones). See METHOD.md sections 2 and 6.
+// v + w x r for rigid ones).
 #include <array>
 #include <optional>
 #include <vector>

@@ -1,4 +1,4 @@
-// The only file in recoil that includes Embree (ARCHITECTURE.md).
+// The only file in recoil that includes Embree.
 #include "sim/collision/embree_scene.h"
 
 #include <embree3/rtcore.h>

@@ -1,6 +1,5 @@
 #pragma once
-// ContactModel: the step's contacts as the solver's rows (METHOD.md sections
-// 2-4). Built from the collision candidates of one step; implements the
+// ContactModel: the step's contacts as the solver's rows. Built from the collision candidates of one step; implements the
 // solver's call-backs (new contacts at the predicted positions,
 // re-linearisation at x* = x + h (v + dv) with the contact weights held).
 //

@@ -1,6 +1,6 @@
 #pragma once
 // How the vertices of one collision surface move with the World's DoFs
-// (METHOD.md section 2): an embedded surface vertex of a deformable body is
+//: an embedded surface vertex of a deformable body is
 // sum_k w_k x_k over its tet's 4 nodes; a rigid body's vertex is
 // c + R r_local, moving with v + w x r; kinematic and fixed bodies move on
 // their own (no DoFs). The contact code only sees these maps, not bodies.

@@ -20,7 +20,7 @@ namespace recoil::sim {
 
 class EmbreeDevice;
 
-// SPEC.md section 3 `transform`: p_world = R (scale .* p) + position with
+// A scene body's `transform`: p_world = R (scale .* p) + position with
 // R = Rz Ry Rx (Euler degrees applied about world x, then y, then z).
 struct Transform {
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m

@@ -1,6 +1,6 @@
 #pragma once
-// Material parameters of a deformable body (SPEC.md section 3, `material`)
-// and the per-model energy densities behind them (METHOD.md section 1).
+// Material parameters of a deformable body (`material`)
+// and the per-model energy densities behind them.
 #include <Eigen/Core>
 #include <string>
 

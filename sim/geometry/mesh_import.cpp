@@ -1,4 +1,4 @@
-// The only file in recoil that includes assimp (ARCHITECTURE.md).
+// The only file in recoil that includes assimp.
 #include "sim/geometry/mesh_import.h"
 
 #include <assimp/postprocess.h>

@@ -1,5 +1,5 @@
 #pragma once
-// Watertight primitives of SPEC.md section 3, centred on their local origin.
+// Watertight primitives of scene files (`primitive`), centred on their local origin.
 // Every primitive is a closed, consistently outward-oriented, vertex-welded
 // triangle surface (each edge shared by exactly two triangles), so it can be
 // tetrahedralized and its volume computed. Flat faces are subdivided so that

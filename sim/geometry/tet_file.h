@@ -1,5 +1,5 @@
 #pragma once
-// Readers for conforming tetrahedral meshes (SPEC.md section 3, `mesh`/`tets`):
+// Readers for conforming tetrahedral meshes (`mesh`/`tets`):
 // Gmsh `.msh` (ASCII versions 2.x, 4.0 and 4.1) and TetGen `.node` + `.ele`.
 // Bad files throw recoil::Error(bad_input) naming the file and line; garbage
 // never crashes or hangs (counts are checked against what the file holds).

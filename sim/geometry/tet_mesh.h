@@ -1,6 +1,6 @@
 #pragma once
 // TetMesh: a linear tetrahedral mesh, the volume discretisation of a
-// deformable body (METHOD.md section 1).
+// deformable body.
 #include <Eigen/Core>
 
 #include "sim/geometry/tri_mesh.h"

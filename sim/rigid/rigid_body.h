@@ -3,10 +3,10 @@
 // velocities of a dynamic, kinematic or fixed body, with its surface kept in
 // body coordinates. The body frame is the world frame at time 0 translated to
 // the reference point: the centre of mass for dynamic bodies, the
-// description's transform.position for kinematic and fixed ones (SPEC.md:
-// kinematic bodies turn about their position).
+// description's transform.position for kinematic and fixed ones (kinematic
+// bodies turn about their position).
 //
-// A dynamic body owns two DoF nodes in the World (METHOD.md section 1): the
+// A dynamic body owns two DoF nodes in the World: the
 // linear velocity (A block m I) and the angular velocity (A block I_world =
 // R I_body R^T). Gyroscopic term: the solve is linear in omega with I_world
 // frozen at the start of the step; after the pose update omega is recomputed

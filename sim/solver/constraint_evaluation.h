@@ -1,5 +1,5 @@
 #pragma once
-// EvaluateConstraints and UpdateKineticFriction (METHOD.md section 4, seed/
+// EvaluateConstraints and UpdateKineticFriction (the paper's
 // Algorithms 2 and 3) on the CR solver's iterate y = [dv; f], f holding
 // (lambda, gamma1, gamma2) per contact. Every threshold is a velocity in m/s
 // (epsilon_2): an impulse is turned into one by the row's effective inverse
@@ -147,7 +147,7 @@ void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 // that follows says whether the next is still needed. Without the
 // mid-solve part, three contacts about a pivot still cycled on and off
 // through max_flips (up to 9 of 120 steps unconverged over six sphere
-// variants of session 8; with it, none).
+// variants; with it, none).
 // The rigid box stack, whose corner rows have cosines -0.5..0.25, still
 // switches a flat landing on at once; it stands for kParallel from 0.7 to
 // 0.99 and falls at 0.5. The cosine is signed: rows pointing against each

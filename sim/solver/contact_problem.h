@@ -1,5 +1,5 @@
 #pragma once
-// The contact solver's view of one time step (METHOD.md sections 2-5): the
+// The contact solver's view of one time step: the
 // unconstrained implicit-Euler system A dv = b and, per contact, a block of
 // three constraint rows. The solver sees matrices and rows, never bodies;
 // sim/contact builds the rows from collision candidates (embedding weights
@@ -43,7 +43,7 @@ struct ContactRows {
 enum class ContactMode : std::uint8_t { inactive, sticking, sliding };
 
 // Multipliers and friction state of one contact; carried from step to step
-// by the caller for the warm start (METHOD.md section 3, step 3).
+// by the caller for the warm start (step 3).
 struct ContactState {
   ContactMode mode = ContactMode::inactive;
   double lambda = 0.0;                                 // normal impulse, N s, >= 0
@@ -80,11 +80,11 @@ struct ContactSolverSettings {
   double constraint_tolerance = 1e-6;  // epsilon_2, m/s: smallest accepted change of a contact, and
                                        // the bound on each constraint row's residual at convergence
   int max_relinearizations = 16;       // relinearize calls per solve
-  // Added with issue #5: the preconditioner of `cr` (cr_plain is always C = I); see cr_solver.h.
+  // the preconditioner of `cr` (cr_plain is always C = I); see cr_solver.h.
   CrPreconditioner preconditioner = CrPreconditioner::block_jacobi;
 };
 
-// What started each Krylov solve of `cr` / `cr_plain` (issue #5: where the
+// What started each Krylov solve of `cr` / `cr_plain` (where the
 // iterations go). Every accepted change of the system throws the Krylov
 // space away, and the iterations that follow re-solve from the true
 // residual: first_solve is the start, the others are restarts.
@@ -115,9 +115,9 @@ struct ContactSolverStats {
   double ms = 0.0;             // wall-clock
   // Added with the solvers: the common accuracy measure (sim/solver/kkt_residual.h), m/s.
   double kkt = 0.0;
-  // Added with issue #5: contacts that reached max_flips (frozen in the active state; cr only).
+  // contacts that reached max_flips (frozen in the active state; cr only).
   int frozen = 0;
-  // Added with issue #5 (cr and cr_plain only): Krylov solves started per
+  // (cr and cr_plain only) Krylov solves started per
   // cause, and the iterations each cause's solves took (until the next start).
   std::array<int, kKrylovStarts> starts{}, start_iterations{};
 };
@@ -133,7 +133,7 @@ class ContactLinearization {
   // yet. Returns how many were added.
   virtual int add_new_contacts(const Eigen::VectorXd& dv, ContactProblem& problem) = 0;
   // Recomputes every contact's normal, tangents, rows and right-hand sides
-  // at x*, holding the contact weights (METHOD.md section 4). Returns the
+  // at x*, holding the contact weights. Returns the
   // largest change of any right-hand side, m/s.
   virtual double relinearize(const Eigen::VectorXd& dv, ContactProblem& problem) = 0;
 };

@@ -25,7 +25,7 @@ void add_rows_transpose_times(const ContactRows& rows, const Eigen::Vector3d& f,
 double normal_row_times(const ContactRows& rows, const Eigen::VectorXd& dv);
 void add_normal_row_transpose_times(const ContactRows& rows, double lambda, Eigen::VectorXd& out);
 
-// The inverted 3x3 diagonal blocks of A, one per node (P_A^-1 of METHOD.md section 5).
+// The inverted 3x3 diagonal blocks of A, one per node (P_A^-1 of the preconditioner, cr_solver.h).
 std::vector<Eigen::Matrix3d> inverse_diagonal_blocks(const BlockSparseMatrix& A);
 
 // diag(J_k P_A^-1 J_k^T) for the three rows of one contact, 1/kg. A row that

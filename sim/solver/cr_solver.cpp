@@ -110,7 +110,7 @@ class CrSolver {
 void CrSolver::start_from_warm_states() {
   const int m = contacts();
   m_tracks.assign(static_cast<size_t>(m), ContactTrack{});
-  // dv starts at zero (METHOD.md section 3, step 3). Starting from the
+  // dv starts at zero (step 3). Starting from the
   // World's contact-free solution instead was measured on the bunny-drop
   // demo: 2.0x the CR iterations and 3.4x the unconverged steps, because
   // resting contacts end near dv = 0 while the free solution falls through.
@@ -216,7 +216,7 @@ void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   out.head(m_n) = top;
 }
 
-// C = diag(P_A, P_S) of METHOD.md section 5: P_A the block diagonal of A
+// C = diag(P_A, P_S): P_A the block diagonal of A
 // (or block SSOR), P_S = J P_A^-1 J^T on selected rows, per row or per
 // contact block (cr_solver.h), 1 on the others (whose B entry is -1). With
 // block SSOR for P_A, P_S still uses the block diagonal: J M^-1 J^T has no

@@ -1,6 +1,6 @@
 #pragma once
-// The preconditioned conjugate-residual active-set solver (METHOD.md
-// sections 3-5, seed/ Algorithm 1) on the masked saddle system
+// The preconditioned conjugate-residual active-set solver (the
+// paper's Algorithm 1) on the masked saddle system
 //   B(S) y = d,  y = [dv; f],  f = (lambda, gamma1, gamma2) per contact,
 //   B(S) = [[A, -J^T S], [-S J, -(I - S)]],  d = [b + J_t^T g_kinetic; -S c],
 // S selecting the active normal rows and the tangent rows of sticking
@@ -8,7 +8,7 @@
 // stays symmetric (prototypes/cr_active_set.py). Only products with A and
 // the per-contact blocks of J are used.
 //
-// The preconditioner (issue #5; `recoil_bench solver_fem`: a tetrahedralized
+// The preconditioner (`recoil_bench solver_fem`: a tetrahedralized
 // 0.5 m cube, rho 1000, h = 1/60 s, 1029 and 3993 DoF, 49 and 121 bottom
 // contacts, E 1e5..1e7, sliding at 0.2 m/s or resting; tolerance 1e-6 m/s,
 // cold start; times on the shared 2-core machine, +-30% noise):

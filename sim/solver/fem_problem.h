@@ -1,6 +1,6 @@
 #pragma once
 // A contact problem with a real FEM system matrix, for the solver's tests
-// and benchmarks (issue #5): a tetrahedralized cube of linear co-rotated
+// and benchmarks: a tetrahedralized cube of linear co-rotated
 // material at rest on the ground plane z = 0, its bottom nodes in contact
 // (one frictional contact each), the whole body drifting along x. A and b
 // are the implicit-Euler system of sim/fem/assembly.h at the rest shape, so

@@ -1,5 +1,4 @@
-// Cost of `recoil compare` on a 300-frame 1280x720 sequence (SPEC.md section
-// 6), split into its parts: metrics on decoded images, PNG decoding of both
+// Cost of `recoil compare` on a 300-frame 1280x720 sequence, split into its parts: metrics on decoded images, PNG decoding of both
 // frames, and the heat map (only with --diff or --report). Per-pair times are
 // measured on 20 distinct synthetic pairs and extrapolated to 300, on one
 // thread, then the command's pipeline on one thread and on every core.

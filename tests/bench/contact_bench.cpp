@@ -102,7 +102,7 @@ void bench_contact() {
   // at step 23; the upper layer of the two-layer pile (the validation test's
   // scene) lands on the lower one at step 25; the block meets the rollers at
   // step 8 and is drawn into the gap over the next 40 steps. Not measured
-  // (issue #5): the column beyond step 26, where cr breaks down at step 78
+  //: the column beyond step 26, where cr breaks down at step 78
   // (KKT 0.03-120 m/s from step 75), and the layers beyond step 36 (each
   // step costs pgs 1-7 s).
   const std::vector<Scene> scenes = {{"jelly stack (3)", stack, 0, 30},
@@ -114,7 +114,7 @@ void bench_contact() {
                    {"scene", "method", "steps (after warm-up)", "iterations/step", "ms/step", "solve ms/step", "worst KKT m/s",
                     "max penetration mm", "not converged"});
   BenchTable ratios("contact solver ratios", {"scene", "cr/pgs time", "cr_plain/cr iterations"});
-  // Where the Krylov iterations go (issue #5): every accepted change of the
+  // Where the Krylov iterations go: every accepted change of the
   // system restarts the solve, and the restarted solve pays for itself again.
   std::vector<std::string> cause_columns = {"scene", "method"};
   for (int c = 0; c < sim::kKrylovStarts; ++c) cause_columns.push_back(sim::to_string(static_cast<sim::KrylovStart>(c)));

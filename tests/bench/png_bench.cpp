@@ -1,4 +1,4 @@
-// PNG encoding cost per frame at the level/filter choices SPEC.md section 8 discusses.
+// PNG encoding cost per frame at the zlib level and filter choices.
 #include <random>
 
 #include "render/png.h"

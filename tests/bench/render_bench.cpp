@@ -1,5 +1,5 @@
-// Offscreen rendering cost per frame (SPEC.md section 8 gives llvmpipe
-// reference timings at 1920x1080: 3.7k triangles ~8 ms, 1M ~72 ms without AA
+// Offscreen rendering cost per frame (llvmpipe reference
+// timings at 1920x1080: 3.7k triangles ~8 ms, 1M ~72 ms without AA
 // or shadows; 4x MSAA adds ~20 / ~110 ms). Each row is the best of a few
 // frames after a warm-up frame, and includes what every frame of a run pays:
 // normals, vertex upload, shadow pass, drawing, resolve and read-back.

@@ -50,7 +50,7 @@ void bench_solver() {
   table.print();
 }
 
-// The real FEM system (issue #5, item 7): iterations and ms of cr with each
+// The real FEM system: iterations and ms of cr with each
 // preconditioner, cr_plain and pgs at the same tolerances, and the ratios
 // the issue asks for (against the default cr).
 struct Variant {

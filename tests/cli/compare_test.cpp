@@ -1,4 +1,4 @@
-// `recoil compare` as a user runs it (SPEC.md sections 5 and 6).
+// `recoil compare` as a user runs it.
 #include <gtest/gtest.h>
 
 #include <fstream>

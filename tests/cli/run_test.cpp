@@ -1,4 +1,4 @@
-// `recoil run` and `recoil drop` end to end (SPEC.md sections 2, 4, 5): every
+// `recoil run` and `recoil drop` end to end: every
 // shipped scene runs, stats.jsonl keys and types, determinism, --resume,
 // exit 3 on a diverging scene with the earlier frames kept, and drop piles
 // that reproduce and save a scene `run` accepts.

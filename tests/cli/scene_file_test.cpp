@@ -1,4 +1,4 @@
-// Scene file v1 (SPEC.md section 3): parsing into a SceneDesc, the resolved
+// Scene file v1: parsing into a SceneDesc, the resolved
 // document, and the bad-scene corpus under tests/cli/bad/ (exit 2, message
 // naming the file and the JSON pointer).
 #include <gtest/gtest.h>

@@ -1,4 +1,4 @@
-// Metrics of SPEC.md section 6 on synthetic images whose values are known in
+// The compare metrics on synthetic images whose values are known in
 // closed form.
 #include "render/image_metrics.h"
 

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Independent reference for `recoil compare` metrics (SPEC.md section 6).
+"""Independent reference for `recoil compare` metrics.
 
 Usage: ssim_reference_check.py ACTUAL.png REFERENCE.png
 Prints one line of JSON: {"ssim": f, "psnr": f or null, "max_difference": f}

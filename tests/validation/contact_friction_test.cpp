@@ -1,4 +1,4 @@
-// VALIDATION.md friction checks: incline stick and slide (rigid box and
+// Friction validation checks: incline stick and slide (rigid box and
 // deformable block), slide to stop, cone isotropy, rolling sphere.
 #include <gtest/gtest.h>
 
@@ -103,7 +103,7 @@ TEST(ContactValidation, SlideToStopAndConeIsotropy) {
 // A faceted sphere (2562 vertices) rolls without slipping. Its pivot
 // passes from vertex to vertex, and the vertices ahead of it have nearly
 // parallel normal rows (cosine 0.98-0.99 in the P_A^-1 metric): switched on
-// together (up to session 7), they flung the ball (a = 12.3 m/s^2); the
+// together, they flung the ball (a = 12.3 m/s^2); the
 // parallel-row rule of constraint_evaluation.h switches them on one at a
 // time, and every step converges.
 TEST(ContactValidation, RollingSphere) {

@@ -1,4 +1,4 @@
-// VALIDATION.md rest, bounce, stack, pile and rollers checks, and the
+// Validation checks: rest, bounce, stack, pile and rollers checks, and the
 // determinism hash (Box2D style).
 #include <gtest/gtest.h>
 
@@ -126,7 +126,7 @@ TEST(ContactValidation, JellyStackStands) {
   EXPECT_LT(penetration, 0.002);
 }
 
-// The bottom cube of the jelly-stack example as it was until session 8
+// The bottom cube of the jelly-stack example as it was first tuned
 // (20 cm, E 2e4, Poisson 0.45, Rayleigh damping for a 5 % ratio, 6x6
 // contact grid, dt 4 ms) lands and settles with a third to a half of its contacts sliding slowly outward.
 // Algorithm 3 used to accept a direction turn by its full angle while a
@@ -200,7 +200,7 @@ TEST(ContactValidation, DeterministicAcrossRuns) {
 // scene (assets/scenes/validation/pile.json). A single column of eight (the
 // contact bench's bunny_pile, each landing at up to 4 m/s) still breaks with
 // cr at step 78: KKT residuals of 0.03-120 m/s from step 75, then 11 mm of
-// penetration and inverted elements (issue #5).
+// penetration and inverted elements.
 TEST(ContactValidation, BunnyPileStaysWithinMargin) {
   const double dt = 0.005;
   World world(bunny_layers(test::source_path("assets/meshes/bunny.obj").string(), 0.12, 3, dt));

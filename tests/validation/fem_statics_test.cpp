@@ -1,4 +1,4 @@
-// Static validation of the FEM against closed forms (VALIDATION.md style):
+// Static validation of the FEM against closed forms :
 // a bar hanging under its own weight and a cantilever under its own weight
 // (Euler-Bernoulli). Both settle by implicit Euler with large steps and mass
 // damping, which converges to the static equilibrium.

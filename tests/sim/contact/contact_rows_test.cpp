@@ -1,5 +1,5 @@
 // Contact rows against finite differences of the gap and the tangential
-// displacement (VALIDATION.md: 1e-5 relative), the right-hand sides, the
+// displacement (1e-5 relative), the right-hand sides, the
 // tangent basis and the warm-start memory.
 #include "sim/contact/contact_model.h"
 

@@ -1,5 +1,5 @@
 // Frictionless random QPs: every method against brute-force enumeration of
-// active sets (VALIDATION.md, solver-level checks: 1e-6).
+// active sets (to 1e-6).
 #include <gtest/gtest.h>
 
 #include <iostream>

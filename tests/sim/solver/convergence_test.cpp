@@ -103,7 +103,7 @@ TEST(SolverConvergence, PreconditionerCutsIterations) {
   EXPECT_LT((cr.dv - plain.dv).lpNorm<Eigen::Infinity>(), 1e-5 * scale) << "both reach the same solution";
 }
 
-// A real FEM system (issue #5, item 7): a tetrahedralized cube, E = 1e6,
+// A real FEM system: a tetrahedralized cube, E = 1e6,
 // sliding on its bottom nodes. The block-Jacobi preconditioner must cut
 // CR's iterations at least 2x against cr_plain (measured: ~4x).
 TEST(SolverConvergence, PreconditionerCutsIterationsOnFemCube) {

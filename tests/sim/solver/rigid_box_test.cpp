@@ -1,4 +1,4 @@
-// Redundant rows (issue #5, item 5): a rigid box on its four bottom
+// Redundant rows: a rigid box on its four bottom
 // corners gives 12 rows on 6 DoF, so B is singular (but consistent) and the
 // split of the normal impulse among the corners is not unique. dv is: at
 // rest it is zero; sliding along x it is the Coulomb deceleration mu g h,

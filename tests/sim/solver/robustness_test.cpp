@@ -1,4 +1,4 @@
-// Exits and safeguards of the solvers (issue #5, items 2, 3, 4 and 6):
+// Exits and safeguards of the solvers:
 // re-linearisation that turns the rows is solved for, the re-linearisation
 // cap reports non-convergence, max_flips never leaves a contact
 // penetrating, and a residual stuck on an inconsistent singular system
