@@ -5,7 +5,7 @@
 //   b = h (f_el(x) + M g) - h (beta + h) K v,
 // with K the (projected) elastic Hessian, so that A dv = b, v += dv, x += h v.
 // K annihilates translations, and rotations of an unstressed body, so the
-// damping force -beta K v acts on deformation only (docs/decisions/damping).
+// damping force -beta K v acts on deformation only (docs/decisions/001-damping-acts-on-deformation-only.md).
 #include <Eigen/Core>
 #include <utility>
 #include <vector>
