@@ -148,6 +148,7 @@ void World::collide_and_solve(StepReport& report) {
   ContactProblem problem;
   problem.A = &m_A;
   problem.b = m_b;
+  problem.softness = m_contact.softness;
   // Rows linearised at the contact-free prediction (the solver itself starts
   // from dv = 0: see cr_solver.cpp).
   model.build(candidates, m_dv, m_memory, problem);

@@ -303,9 +303,12 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
         p.violation = -slack;
       }
     } else {
+      // The selected rows' own yield counts as motion (ContactSoftness).
+      const Eigen::Vector3d yield = problem.softness.yield(track.w, f, rows);
       const Eigen::Vector3d jdv = rows_times(rows, dv);
-      const double slack = jdv[0] - rows.rhs_normal;
-      const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
+      const double slack = jdv[0] + yield[0] - rows.rhs_normal;
+      Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
+      if (s.mode == ContactMode::sticking) u += yield.tail<2>();
       p = evaluate_active(rows, s, track, f, slack, u, eps2, frozen, converged);
       p.contact = k;
     }

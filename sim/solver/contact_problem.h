@@ -38,6 +38,9 @@ struct ContactRows {
   Eigen::Vector2d rhs_tangent = Eigen::Vector2d::Zero();  // m/s: J_t dv = rhs_tangent while sticking
   double mu_static = 0.5;
   double mu_kinetic = 0.5;
+  // N s, (normal, t1, t2): the impulses the rows' compliance is measured
+  // from (ContactSoftness below); solve_contacts sets it to the warm start.
+  Eigen::Vector3d softness_centre = Eigen::Vector3d::Zero();
 };
 
 enum class ContactMode : std::uint8_t { inactive, sticking, sliding };
@@ -52,11 +55,36 @@ struct ContactState {
   Eigen::Vector2d slip = Eigen::Vector2d::Zero();      // unit slip direction in (t1, t2); friction opposes it
 };
 
+// How far the selected rows of a contact yield, dimensionless: a selected
+// row r reads J_r dv + c_r (f_r - f0_r) = rhs_r (>= for the normal), with
+// compliance c_r = softness * w_r in 1/kg, w_r the row's effective inverse
+// mass diag(J P_A^-1 J^T), and f0 the contact's warm-start impulse
+// (ContactRows::softness_centre). Physically an implicit spring of
+// stiffness 1 / (c_r h^2) on the row's effective mass, natural frequency
+// 1 / (h sqrt(softness)), preloaded with last step's impulse. The
+// multipliers become unique where rows are redundant (a box's four corners
+// on a plane, coincident vertices of touching faces), and the rows yield
+// only by the change of their impulse over a step: a contact whose load is
+// steady holds exactly (no penetration at rest, no creep while sticking).
+struct ContactSoftness {
+  double normal = 0.0;   // normal rows
+  double tangent = 0.0;  // tangent rows of a sticking contact
+  Eigen::Vector3d compliance(const Eigen::Vector3d& w) const {
+    return {normal * w[0], tangent * w[1], tangent * w[2]};
+  }
+  // c (f - f0), m/s: how far rows with effective inverse masses w and
+  // impulses f fall short of their right-hand sides.
+  Eigen::Vector3d yield(const Eigen::Vector3d& w, const Eigen::Vector3d& f, const ContactRows& rows) const {
+    return compliance(w).cwiseProduct(f - rows.softness_centre);
+  }
+};
+
 struct ContactProblem {
   const BlockSparseMatrix* A = nullptr;  // #DoF by #DoF, SPD; fixed nodes are identity rows with b = 0
   Eigen::VectorXd b;                     // #DoF
   std::vector<ContactRows> rows;         // one per contact
   std::vector<ContactState> states;      // same size as rows: in, the warm start; out, the solution
+  ContactSoftness softness;              // zero: the rows hold exactly
 };
 
 enum class SolverMethod { cr, cr_plain, pgs };

@@ -47,6 +47,7 @@ class CrSolver {
   bool tangent_on(int k) const { return m_problem.states[static_cast<size_t>(k)].mode == ContactMode::sticking; }
   bool row_on(int k, int r) const { return r == 0 ? normal_on(k) : tangent_on(k); }
   double row_w(int k, int r) const { return m_tracks[static_cast<size_t>(k)].w[r]; }
+  Eigen::Vector3d compliance(int k) const { return m_problem.softness.compliance(m_tracks[static_cast<size_t>(k)].w); }
 
   void start_from_warm_states();
   void grow_contacts();
@@ -155,7 +156,8 @@ void CrSolver::refresh_rows() {
     const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
     m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(rows, m_inv_diag);
     if (!blocks) continue;
-    const Eigen::Matrix3d W = contact_block(rows, m_inv_diag);
+    const Eigen::Matrix3d W = contact_block(rows, m_inv_diag) + Eigen::Matrix3d(
+        m_problem.softness.compliance(m_tracks[static_cast<size_t>(k)].w).asDiagonal());
     // Only a well-conditioned block is inverted; the diagonal serves otherwise.
     if (W.trace() > 0.0 && W.determinant() > 1e-12 * std::pow(W.trace() / 3.0, 3))
       m_contact_inv[static_cast<size_t>(k)] = W.inverse();
@@ -174,8 +176,10 @@ void CrSolver::build_rhs() {
       f << 0.0, tangent_impulse(rows, s);
       add_rows_transpose_times(rows, f, m_d);
     }
-    if (normal_on(k)) m_d[m_n + 3 * k] = -rows.rhs_normal;
-    if (tangent_on(k)) m_d.segment<2>(m_n + 3 * k + 1) = -rows.rhs_tangent;
+    // The compliance's preload (ContactSoftness) moves to the right-hand side.
+    const Eigen::Vector3d preload = compliance(k).cwiseProduct(rows.softness_centre);
+    if (normal_on(k)) m_d[m_n + 3 * k] = -rows.rhs_normal - preload[0];
+    if (tangent_on(k)) m_d.segment<2>(m_n + 3 * k + 1) = -rows.rhs_tangent - preload.tail<2>();
   }
   // The per-row factors follow the states here, as the right-hand side does.
   m_row_scale.resize(3 * m);
@@ -184,7 +188,7 @@ void CrSolver::build_rhs() {
     for (int r = 0; r < 3; ++r) {
       const double w = row_w(k, r);
       m_row_scale[3 * k + r] = row_on(k, r) || w <= 0.0 ? 1.0 : w;
-      m_row_divisor[3 * k + r] = row_on(k, r) && w > 0.0 ? w : 1.0;
+      m_row_divisor[3 * k + r] = row_on(k, r) && w > 0.0 ? w + compliance(k)[r] : 1.0;
     }
 }
 
@@ -204,10 +208,10 @@ void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
     if (tangent_on(k)) {
       const Eigen::Vector3d f = x.segment<3>(base);
       add_rows_transpose_times(rows, -f, top);
-      out.segment<3>(base) = -rows_times(rows, dv);
+      out.segment<3>(base) = -rows_times(rows, dv) - compliance(k).cwiseProduct(f);
     } else if (normal_on(k)) {
       add_normal_row_transpose_times(rows, -x[base], top);
-      out[base] = -normal_row_times(rows, dv);
+      out[base] = -normal_row_times(rows, dv) - compliance(k)[0] * x[base];
       out.segment<2>(base + 1) = -x.segment<2>(base + 1);
     } else {
       out.segment<3>(base) = -x.segment<3>(base);

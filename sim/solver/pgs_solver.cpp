@@ -21,6 +21,7 @@ class PgsSolver {
     m_ldlt.compute(problem.A->to_eigen());
     RECOIL_CHECK(m_ldlt.info() == Eigen::Success, "A is not SPD");
     m_dv_free = m_ldlt.solve(problem.b);
+    m_inv_diag = inverse_diagonal_blocks(*problem.A);
   }
 
   void run(Eigen::VectorXd& dv);
@@ -38,6 +39,7 @@ class PgsSolver {
   int m_n;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_ldlt;
   Eigen::VectorXd m_dv_free;  // A^-1 b
+  std::vector<Eigen::Matrix3d> m_inv_diag;  // P_A^-1: the metric of the rows' compliance
   Eigen::MatrixXd m_G;        // #DoF by 3 #contacts: A^-1 J^T
   Eigen::MatrixXd m_W;        // 3 #contacts square: J A^-1 J^T
   Eigen::VectorXd m_f;        // impulses (lambda, gamma) per contact
@@ -73,9 +75,12 @@ double PgsSolver::sweep() {
     const Eigen::Matrix3d Wkk = m_W.block<3, 3>(3 * k, 3 * k);
     if (!(Wkk(0, 0) > 0.0)) continue;
     const Eigen::Vector3d old = m_f.segment<3>(3 * k);
-    Eigen::Vector3d u = m_u.segment<3>(3 * k);
-    const double lambda = std::max(0.0, old[0] - (u[0] - rows.rhs_normal) / Wkk(0, 0));
+    // The rows' compliance (ContactSoftness) adds to their diagonal.
+    const Eigen::Vector3d c = m_problem.softness.compliance(effective_inverse_mass(rows, m_inv_diag));
+    Eigen::Vector3d u = m_u.segment<3>(3 * k) + c.cwiseProduct(old - rows.softness_centre);
+    const double lambda = std::max(0.0, old[0] - (u[0] - rows.rhs_normal) / (Wkk(0, 0) + c[0]));
     u += Wkk.col(0) * (lambda - old[0]);
+    u[0] += c[0] * (lambda - old[0]);
     Eigen::Vector2d gamma = Eigen::Vector2d::Zero();
     const double radius = rows.mu_kinetic * lambda;
     if (radius > 0.0) {
@@ -84,7 +89,8 @@ double PgsSolver::sweep() {
       // (maximal dissipation); a matrix step would skew the direction.
       const Eigen::Matrix2d Wtt = Wkk.bottomRightCorner<2, 2>();
       const double top = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(Wtt, Eigen::EigenvaluesOnly).eigenvalues()[1];
-      if (top > 0.0) gamma = old.tail<2>() - (u.tail<2>() - rows.rhs_tangent) / top;
+      const double yield = std::max(c[1], c[2]);
+      if (top > 0.0) gamma = old.tail<2>() - (u.tail<2>() - rows.rhs_tangent) / (top + yield);
       const double norm = gamma.norm();
       if (norm > radius) gamma *= radius / norm;
     }

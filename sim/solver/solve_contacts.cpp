@@ -4,6 +4,7 @@
 
 #include "core/check.h"
 #include "sim/solver/contact_problem.h"
+#include "sim/solver/contact_rows_ops.h"
 #include "sim/solver/cr_solver.h"
 #include "sim/solver/kkt_residual.h"
 #include "sim/solver/pgs_solver.h"
@@ -53,6 +54,13 @@ ContactSolverStats solve_contacts(ContactProblem& problem, const ContactSolverSe
     for (size_t i = 0; i < rows.nodes.size(); ++i)
       RECOIL_CHECK(rows.nodes[i] >= 0 && rows.nodes[i] < problem.A->block_rows() && (i == 0 || rows.nodes[i - 1] < rows.nodes[i]),
                    "contact node " << rows.nodes[i]);
+  }
+  // The rows' compliance is measured from the warm start (ContactSoftness).
+  for (size_t k = 0; k < problem.rows.size(); ++k) {
+    const ContactState& s = problem.states[k];
+    problem.rows[k].softness_centre.setZero();
+    if (s.mode != ContactMode::inactive)
+      problem.rows[k].softness_centre << std::max(s.lambda, 0.0), tangent_impulse(problem.rows[k], s);
   }
   const auto start = std::chrono::steady_clock::now();
   ContactSolverStats stats;
