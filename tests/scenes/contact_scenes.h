@@ -114,6 +114,37 @@ inline WorldDesc box_stack(int count = 5, double size = 0.1, double dt = 0.01) {
   return w;
 }
 
+// The usual rigid friction benchmarks (g 9.81, dt 2 ms, 0.2 m cubes of
+// density 700, every body starting exactly touching its support).
+inline constexpr double kBenchCube = 0.2;       // m
+inline constexpr double kBenchDensity = 700.0;  // kg/m^3
+inline constexpr double kBenchDt = 0.002;       // s
+
+// `count` cubes stacked on the ground with no gap at all, mu 0.5.
+inline WorldDesc touching_cube_stack(int count) {
+  WorldDesc w = base_world(kBenchDt);
+  w.planes.push_back(ground(friction(0.5, 0.5)));
+  for (int i = 0; i < count; ++i)
+    w.rigid_bodies.push_back(rigid_box("box" + std::to_string(i), Eigen::Vector3d::Constant(kBenchCube),
+                                       Eigen::Vector3d(0.0, (i + 0.5) * kBenchCube, 0.0), friction(0.5, 0.5),
+                                       kBenchDensity));
+  return w;
+}
+
+// A cube resting on a plane tilted by 16 degrees, mu 0.35 (tan 16 deg =
+// 0.287: static friction holds it), lifted `gap` off the plane.
+inline constexpr double kHoldingSlope = 16.0 * kPi / 180.0;
+inline constexpr double kHoldingMu = 0.35;
+inline WorldDesc cube_on_holding_slope(double gap = 0.0) {
+  WorldDesc w = base_world(kBenchDt);
+  w.planes.push_back(incline(kHoldingSlope, friction(kHoldingMu, kHoldingMu)));
+  RigidBodyDesc b = rigid_box("cube", Eigen::Vector3d::Constant(kBenchCube), Eigen::Vector3d::Zero(),
+                              friction(kHoldingMu, kHoldingMu), kBenchDensity);
+  place_on_incline(b, kHoldingSlope, 0.5 * kBenchCube, 0.0, gap);
+  w.rigid_bodies.push_back(b);
+  return w;
+}
+
 // Three jelly cubes (edge `size`) stacked on the ground.
 inline WorldDesc jelly_stack(int count = 3, double size = 0.1, int resolution = 3, double dt = 0.01) {
   WorldDesc w = base_world(dt);

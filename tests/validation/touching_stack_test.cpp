@@ -11,20 +11,8 @@ namespace {
 
 using namespace recoil::sim::scenes;
 
-// Four rigid 0.2 m cubes, density 700, mu 0.5, set down on the ground and
-// on each other with no gap at all; dt 2 ms.
-WorldDesc rigid_touching_stack(int count) {
-  const double cube = 0.2;
-  WorldDesc w = base_world(0.002);
-  w.planes.push_back(ground(friction(0.5, 0.5)));
-  for (int i = 0; i < count; ++i)
-    w.rigid_bodies.push_back(rigid_box("box" + std::to_string(i), Eigen::Vector3d::Constant(cube),
-                                       Eigen::Vector3d(0.0, (i + 0.5) * cube, 0.0), friction(0.5, 0.5), 700.0));
-  return w;
-}
-
 TEST(TouchingStack, FourRigidCubesStandTenSeconds) {
-  const WorldDesc desc = rigid_touching_stack(4);
+  const WorldDesc desc = touching_cube_stack(4);
   World world(desc);
   const Eigen::Vector3d start = motion(world, 3).center;
   int unconverged = 0, stepped = 0;
