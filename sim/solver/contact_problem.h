@@ -11,7 +11,9 @@
 //   world inertia tensor as their 3x3 diagonal blocks).
 // - Contact k's rows J_k (3 by #DoF): row 0 is the normal (J_n dv grows the
 //   gap), rows 1-2 the tangents t1, t2 of an orthonormal basis.
-// - Non-penetration: J_n dv >= rhs_normal, multiplier lambda >= 0.
+// - Non-penetration: J_n dv >= rhs_normal, multiplier lambda >= 0 (rows that
+//   yield by ContactSoftness, below, add c (f - f0) on the left here and in
+//   the sticking rows).
 // - Sticking: J_t dv = rhs_tangent, multiplier gamma in R^2, valid while
 //   |gamma| <= mu_static * lambda.
 // - Sliding: no tangent rows; a known impulse -mu_kinetic * lambda' * slip
@@ -65,7 +67,8 @@ struct ContactState {
 // multipliers become unique where rows are redundant (a box's four corners
 // on a plane, coincident vertices of touching faces), and the rows yield
 // only by the change of their impulse over a step: a contact whose load is
-// steady holds exactly (no penetration at rest, no creep while sticking).
+// steady holds exactly. The World keeps it at zero for now
+// (docs/decisions/004-soft-contact-rows.md says why).
 struct ContactSoftness {
   double normal = 0.0;   // normal rows
   double tangent = 0.0;  // tangent rows of a sticking contact

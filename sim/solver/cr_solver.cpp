@@ -156,8 +156,7 @@ void CrSolver::refresh_rows() {
     const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
     m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(rows, m_inv_diag);
     if (!blocks) continue;
-    const Eigen::Matrix3d W = contact_block(rows, m_inv_diag) + Eigen::Matrix3d(
-        m_problem.softness.compliance(m_tracks[static_cast<size_t>(k)].w).asDiagonal());
+    const Eigen::Matrix3d W = contact_block(rows, m_inv_diag) + Eigen::Matrix3d(compliance(k).asDiagonal());
     // Only a well-conditioned block is inverted; the diagonal serves otherwise.
     if (W.trace() > 0.0 && W.determinant() > 1e-12 * std::pow(W.trace() / 3.0, 3))
       m_contact_inv[static_cast<size_t>(k)] = W.inverse();
