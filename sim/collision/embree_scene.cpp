@@ -222,25 +222,31 @@ struct CollideOutput {
   bool failed = false;  // an allocation failed inside the callback
 };
 
+// Whether boxes i (of scene0) and j (of scene1) form a pair as
+// overlapping_pairs defines it; a self pair is taken as (lo, hi).
+bool is_pair(const BoxScene::Impl& scene0, const BoxScene::Impl& scene1, unsigned i, unsigned j) {
+  if (&scene0 == &scene1) {
+    if (i == j) return false;
+    if (i > j) std::swap(i, j);
+    const std::vector<std::array<int, 2>>& keys = scene0.keys;
+    if (!keys.empty() && (keys[i][0] == keys[j][0] || keys[i][0] == keys[j][1] || keys[i][1] == keys[j][0] ||
+                          keys[i][1] == keys[j][1]))
+      return false;
+  }
+  return overlap(scene0.bounds[i], scene1.bounds[j]);
+}
+
 void append_overlaps(CollideOutput& output, const RTCCollision* collisions, unsigned int count) {
   const bool self = output.scene0 == output.scene1;
-  const std::vector<std::array<int, 2>>& keys = output.scene0->keys;
   // Filter outside the lock; only the survivors are appended under it.
   thread_local std::vector<std::pair<int, int>> kept;
   kept.clear();
   for (unsigned int k = 0; k < count; ++k) {
     unsigned i = collisions[k].primID0, j = collisions[k].primID1;
-    if (self) {
-      // Each unordered pair once as (lo, hi), whichever order Embree used.
-      if (i == j) continue;
-      if (i > j) std::swap(i, j);
-      if (!keys.empty() && (keys[i][0] == keys[j][0] || keys[i][0] == keys[j][1] || keys[i][1] == keys[j][0] ||
-                            keys[i][1] == keys[j][1]))
-        continue;
-    }
-    // Embree reports leaf-box pairs: keep the pairs whose own boxes overlap.
-    if (overlap(output.scene0->bounds[i], output.scene1->bounds[j]))
-      kept.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    // Embree reports leaf-box pairs: keep the pairs whose own boxes overlap,
+    // each unordered self pair once as (lo, hi), whichever order Embree used.
+    if (self && i > j) std::swap(i, j);
+    if (is_pair(*output.scene0, *output.scene1, i, j)) kept.emplace_back(static_cast<int>(i), static_cast<int>(j));
   }
   std::lock_guard<std::mutex> lock(output.mutex);
   output.pairs.insert(output.pairs.end(), kept.begin(), kept.end());
@@ -249,7 +255,15 @@ void append_overlaps(CollideOutput& output, const RTCCollision* collisions, unsi
 // Sorts (i, j) pairs of non-negative ints and drops repeats: an LSD radix
 // sort on 64-bit keys, much faster than std::sort for the millions of pairs
 // a fine self-colliding surface produces.
+// Below kRadixPairs pairs, std::sort is cheaper than the radix passes'
+// 65537-entry counters.
+constexpr size_t kRadixPairs = 1 << 16;
 void sort_unique_pairs(std::vector<std::pair<int, int>>& pairs) {
+  if (pairs.size() < kRadixPairs) {
+    std::sort(pairs.begin(), pairs.end());
+    pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+    return;
+  }
   std::vector<std::uint64_t> keys(pairs.size()), scratch(pairs.size());
   for (size_t k = 0; k < pairs.size(); ++k)
     keys[k] = (static_cast<std::uint64_t>(pairs[k].first) << 32) | static_cast<std::uint32_t>(pairs[k].second);
@@ -276,6 +290,10 @@ void collect_collisions(void* user, RTCCollision* collisions, unsigned int count
     output->failed = true;
   }
 }
+}  // namespace
+
+namespace {
+constexpr size_t kDirectPairs = 4096;  // box pairs tested one by one rather than through rtcCollide
 }  // namespace
 
 BoxScene::BoxScene(EmbreeDevice& device) : m_impl(std::make_unique<Impl>()) {
@@ -326,6 +344,16 @@ void BoxScene::set_boxes(const std::vector<Aabb>& boxes, std::vector<std::array<
 std::vector<std::pair<int, int>> BoxScene::overlapping_pairs(const BoxScene& other) const {
   CollideOutput output{m_impl.get(), other.m_impl.get(), {}, {}, false};
   if (m_impl->bounds.empty() || other.m_impl->bounds.empty()) return {};
+  // Few boxes (a rigid box's 12 triangles): every pair directly, in order,
+  // with the same test; Embree's threaded traversal costs more than that.
+  const size_t n0 = m_impl->bounds.size(), n1 = other.m_impl->bounds.size();
+  if (n0 * n1 <= kDirectPairs) {
+    const bool self = m_impl.get() == other.m_impl.get();
+    for (unsigned i = 0; i < n0; ++i)
+      for (unsigned j = self ? i + 1 : 0; j < n1; ++j)
+        if (is_pair(*m_impl, *other.m_impl, i, j)) output.pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    return std::move(output.pairs);
+  }
   rtcCollide(m_impl->scene, other.m_impl->scene, collect_collisions, &output);
   m_impl->device->throw_if_error("rtcCollide on box scenes");
   if (output.failed) throw Error(ErrorKind::internal, "out of memory in rtcCollide");
