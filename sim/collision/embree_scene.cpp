@@ -192,6 +192,8 @@ struct BoxScene::Impl {
   RTCGeometry geometry = nullptr;
   std::vector<RTCBounds> bounds;  // read by the bounds callback during commits
   std::vector<std::array<int, 2>> keys;  // empty or one per box
+  size_t committed_count = 0;      // boxes in the BVH as last committed
+  bool stale = false;              // bounds changed since the last commit
 };
 
 namespace {
@@ -294,6 +296,18 @@ void collect_collisions(void* user, RTCCollision* collisions, unsigned int count
 
 namespace {
 constexpr size_t kDirectPairs = 4096;  // box pairs tested one by one rather than through rtcCollide
+
+// Refits the BVH when the box count is unchanged, rebuilds it otherwise.
+void commit_if_stale(BoxScene::Impl& impl) {
+  if (!impl.stale) return;
+  if (impl.bounds.size() != impl.committed_count)
+    rtcSetGeometryUserPrimitiveCount(impl.geometry, static_cast<unsigned>(impl.bounds.size()));
+  rtcCommitGeometry(impl.geometry);
+  rtcCommitScene(impl.scene);
+  impl.device->throw_if_error("building a box scene");
+  impl.committed_count = impl.bounds.size();
+  impl.stale = false;
+}
 }  // namespace
 
 BoxScene::BoxScene(EmbreeDevice& device) : m_impl(std::make_unique<Impl>()) {
@@ -322,7 +336,6 @@ int BoxScene::num_boxes() const { return static_cast<int>(m_impl->bounds.size())
 void BoxScene::set_boxes(const std::vector<Aabb>& boxes, std::vector<std::array<int, 2>> keys) {
   RECOIL_CHECK(keys.empty() || keys.size() == boxes.size(), keys.size() << " keys for " << boxes.size() << " boxes");
   m_impl->keys = std::move(keys);
-  const bool same_count = boxes.size() == m_impl->bounds.size();
   m_impl->bounds.resize(boxes.size());
   for (size_t i = 0; i < boxes.size(); ++i) {
     RECOIL_CHECK(boxes[i].valid(), "box " << i << " is empty or NaN");
@@ -335,10 +348,9 @@ void BoxScene::set_boxes(const std::vector<Aabb>& boxes, std::vector<std::array<
     b.upper_z = round_up(boxes[i].max.z());
     b.align0 = b.align1 = 0.0f;
   }
-  if (!same_count) rtcSetGeometryUserPrimitiveCount(m_impl->geometry, static_cast<unsigned>(boxes.size()));
-  rtcCommitGeometry(m_impl->geometry);
-  rtcCommitScene(m_impl->scene);
-  m_impl->device->throw_if_error("building a box scene");
+  // The BVH is committed when a query first needs it (commit_if_stale): a
+  // scene small enough to be paired box by box never builds one.
+  m_impl->stale = true;
 }
 
 std::vector<std::pair<int, int>> BoxScene::overlapping_pairs(const BoxScene& other) const {
@@ -354,6 +366,8 @@ std::vector<std::pair<int, int>> BoxScene::overlapping_pairs(const BoxScene& oth
         if (is_pair(*m_impl, *other.m_impl, i, j)) output.pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
     return std::move(output.pairs);
   }
+  commit_if_stale(*m_impl);
+  commit_if_stale(*other.m_impl);
   rtcCollide(m_impl->scene, other.m_impl->scene, collect_collisions, &output);
   m_impl->device->throw_if_error("rtcCollide on box scenes");
   if (output.failed) throw Error(ErrorKind::internal, "out of memory in rtcCollide");

@@ -95,7 +95,8 @@ class BoxScene {
   BoxScene& operator=(const BoxScene&) = delete;
 
   // Replaces the boxes (each rounded outward to float). The BVH is refitted
-  // when the count is unchanged and rebuilt otherwise. `keys` (empty, or one
+  // when the count is unchanged and rebuilt otherwise, at the first query
+  // that uses it. `keys` (empty, or one
   // pair per box) only matter for self queries: two boxes with a key in common
   // are never paired (edges that share a vertex, say).
   void set_boxes(const std::vector<Aabb>& boxes, std::vector<std::array<int, 2>> keys = {});
