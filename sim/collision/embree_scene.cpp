@@ -256,9 +256,8 @@ void append_overlaps(CollideOutput& output, const RTCCollision* collisions, unsi
 
 // Sorts (i, j) pairs of non-negative ints and drops repeats: an LSD radix
 // sort on 64-bit keys, much faster than std::sort for the millions of pairs
-// a fine self-colliding surface produces.
-// Below kRadixPairs pairs, std::sort is cheaper than the radix passes'
-// 65537-entry counters.
+// a fine self-colliding surface produces, and std::sort below kRadixPairs,
+// where the radix passes' 65537-entry counters cost more than the sort.
 constexpr size_t kRadixPairs = 1 << 16;
 void sort_unique_pairs(std::vector<std::pair<int, int>>& pairs) {
   if (pairs.size() < kRadixPairs) {
@@ -292,9 +291,7 @@ void collect_collisions(void* user, RTCCollision* collisions, unsigned int count
     output->failed = true;
   }
 }
-}  // namespace
 
-namespace {
 constexpr size_t kDirectPairs = 4096;  // box pairs tested one by one rather than through rtcCollide
 
 // Refits the BVH when the box count is unchanged, rebuilds it otherwise.
@@ -354,18 +351,19 @@ void BoxScene::set_boxes(const std::vector<Aabb>& boxes, std::vector<std::array<
 }
 
 std::vector<std::pair<int, int>> BoxScene::overlapping_pairs(const BoxScene& other) const {
-  CollideOutput output{m_impl.get(), other.m_impl.get(), {}, {}, false};
   if (m_impl->bounds.empty() || other.m_impl->bounds.empty()) return {};
   // Few boxes (a rigid box's 12 triangles): every pair directly, in order,
   // with the same test; Embree's threaded traversal costs more than that.
   const size_t n0 = m_impl->bounds.size(), n1 = other.m_impl->bounds.size();
   if (n0 * n1 <= kDirectPairs) {
+    std::vector<std::pair<int, int>> pairs;
     const bool self = m_impl.get() == other.m_impl.get();
     for (unsigned i = 0; i < n0; ++i)
       for (unsigned j = self ? i + 1 : 0; j < n1; ++j)
-        if (is_pair(*m_impl, *other.m_impl, i, j)) output.pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
-    return std::move(output.pairs);
+        if (is_pair(*m_impl, *other.m_impl, i, j)) pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
+    return pairs;
   }
+  CollideOutput output{m_impl.get(), other.m_impl.get(), {}, {}, false};
   commit_if_stale(*m_impl);
   commit_if_stale(*other.m_impl);
   rtcCollide(m_impl->scene, other.m_impl->scene, collect_collisions, &output);

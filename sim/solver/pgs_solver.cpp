@@ -40,6 +40,7 @@ class PgsSolver {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_ldlt;
   Eigen::VectorXd m_dv_free;  // A^-1 b
   std::vector<Eigen::Matrix3d> m_inv_diag;  // P_A^-1: the metric of the rows' compliance
+  std::vector<Eigen::Vector3d> m_compliance;  // per contact, 1/kg (ContactSoftness), set with the operator
   Eigen::MatrixXd m_G;        // #DoF by 3 #contacts: A^-1 J^T
   Eigen::MatrixXd m_W;        // 3 #contacts square: J A^-1 J^T
   Eigen::VectorXd m_f;        // impulses (lambda, gamma) per contact
@@ -60,6 +61,10 @@ void PgsSolver::build_operator() {
     const Eigen::VectorXd column = m_G.col(c);
     for (int k = 0; k < m; ++k) m_W.block<3, 1>(3 * k, c) = rows_times(m_problem.rows[static_cast<size_t>(k)], column);
   }
+  m_compliance.resize(static_cast<size_t>(m));
+  for (int k = 0; k < m; ++k)
+    m_compliance[static_cast<size_t>(k)] =
+        m_problem.softness.compliance(effective_inverse_mass(m_problem.rows[static_cast<size_t>(k)], m_inv_diag));
   m_u.resize(3 * m);
   for (int k = 0; k < m; ++k) m_u.segment<3>(3 * k) = rows_times(m_problem.rows[static_cast<size_t>(k)], m_dv_free);
   m_u.noalias() += m_W * m_f;
@@ -76,7 +81,7 @@ double PgsSolver::sweep() {
     if (!(Wkk(0, 0) > 0.0)) continue;
     const Eigen::Vector3d old = m_f.segment<3>(3 * k);
     // The rows' compliance (ContactSoftness) adds to their diagonal.
-    const Eigen::Vector3d c = m_problem.softness.compliance(effective_inverse_mass(rows, m_inv_diag));
+    const Eigen::Vector3d& c = m_compliance[static_cast<size_t>(k)];
     Eigen::Vector3d u = m_u.segment<3>(3 * k) + c.cwiseProduct(old - rows.softness_centre);
     const double lambda = std::max(0.0, old[0] - (u[0] - rows.rhs_normal) / (Wkk(0, 0) + c[0]));
     u += Wkk.col(0) * (lambda - old[0]);

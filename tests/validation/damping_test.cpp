@@ -24,14 +24,14 @@ constexpr double kGravity = 9.81;
 
 // The 0.2 m cube of the friction benchmarks (density 700) with damping ratio zeta.
 DeformableBodyDesc damped_cube(double zeta, const Eigen::Vector3d& position, FrictionDesc f = {}) {
-  Material m = jelly(1e5, 700.0);
+  Material m = jelly(1e5, kBenchDensity);
   m.damping_ratio = zeta;
-  return soft_box("cube", Eigen::Vector3d::Constant(0.2), 3, m, position, f);
+  return soft_box("cube", Eigen::Vector3d::Constant(kBenchCube), 3, m, position, f);
 }
 
 TEST(DampingValidation, DampedFreeFallIsExactlyGT) {
   for (double zeta : {0.0, 0.02, 0.5}) {
-    WorldDesc w = base_world(0.002);
+    WorldDesc w = base_world(kBenchDt);
     w.bodies.push_back(damped_cube(zeta, Eigen::Vector3d::Zero()));
     World world(w);
     run(world, steps(0.5, w.dt));
@@ -44,7 +44,7 @@ TEST(DampingValidation, DampedFreeFallIsExactlyGT) {
 }
 
 TEST(DampingValidation, DampedSlideOnInclineMatchesCoulomb) {
-  const double theta = 27.0 * kPi / 180.0, mu = 0.35, dt = 0.002;
+  const double theta = 27.0 * kPi / 180.0, mu = 0.35, dt = kBenchDt;
   for (double zeta : {0.0, 0.02}) {
     WorldDesc w = base_world(dt);
     w.planes.push_back(incline(theta, friction(mu, mu)));
