@@ -11,6 +11,7 @@ namespace recoil::cli {
 struct GlobalOptions {
   bool quiet = false;     // -q: no progress bar, no summary lines
   bool log_json = false;  // --log-json: machine-readable progress on stderr
+  double max_memory_gib = 0.0;  // --max-memory: a run estimated to need more is refused; 0: 80 % of the machine's
 };
 
 using Action = std::function<int()>;

@@ -20,12 +20,86 @@ std::string escape_pointer_token(const std::string& key) {
   return out;
 }
 
-std::string format_number(double x) {
+std::string short_number(double x) {
   std::ostringstream s;
   s.precision(6);
   s << x;
   return s.str();
 }
+
+// Byte `offset` of `text` as 1-based line and column.
+std::pair<size_t, size_t> line_and_column(const std::string& text, size_t offset) {
+  size_t line = 1, column = 1;
+  for (size_t i = 0; i < std::min(offset, text.size()); ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      column = 1;
+    } else {
+      ++column;
+    }
+  }
+  return {line, column};
+}
+
+// A SAX reader that only follows where it is in the document, so that the
+// one error the DOM parser cannot place (a number overflowing a double) can
+// be given its JSON pointer.
+class PointerTracker : public nlohmann::json_sax<nlohmann::json> {
+ public:
+  std::string pointer() const {
+    std::string out;
+    for (const Level& level : m_levels) {
+      if (level.is_array) out += "/" + std::to_string(level.index);
+      else if (level.has_key) out += "/" + escape_pointer_token(level.key);
+    }
+    return out.empty() ? "/" : out;
+  }
+  size_t error_offset() const { return m_error_offset; }
+
+  bool null() override { return value(); }
+  bool boolean(bool) override { return value(); }
+  bool number_integer(number_integer_t) override { return value(); }
+  bool number_unsigned(number_unsigned_t) override { return value(); }
+  bool number_float(number_float_t, const string_t&) override { return value(); }
+  bool string(string_t&) override { return value(); }
+  bool binary(binary_t&) override { return value(); }
+  bool start_object(std::size_t) override { return open(false); }
+  bool key(string_t& name) override {
+    m_levels.back().key = name;
+    m_levels.back().has_key = true;
+    return true;
+  }
+  bool end_object() override { return close(); }
+  bool start_array(std::size_t) override { return open(true); }
+  bool end_array() override { return close(); }
+  bool parse_error(std::size_t position, const std::string&, const nlohmann::detail::exception&) override {
+    m_error_offset = position;
+    return false;
+  }
+
+ private:
+  struct Level {
+    bool is_array = false;
+    size_t index = 0;
+    bool has_key = false;
+    std::string key;
+  };
+  bool open(bool is_array) {
+    m_levels.push_back({is_array, 0, false, {}});
+    return true;
+  }
+  bool close() {
+    m_levels.pop_back();
+    return value();
+  }
+  // A value (or a whole container) ended: an array moves to its next element.
+  bool value() {
+    if (!m_levels.empty() && m_levels.back().is_array) ++m_levels.back().index;
+    return true;
+  }
+  std::vector<Level> m_levels;
+  size_t m_error_offset = 0;
+};
 
 size_t edit_distance(std::string_view a, std::string_view b) {
   std::vector<size_t> row(b.size() + 1);
@@ -49,18 +123,16 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
   try {
     return nlohmann::json::parse(text);
+  } catch (const nlohmann::json::out_of_range&) {
+    // Only a number too large for a double is out of range while parsing.
+    PointerTracker tracker;
+    nlohmann::json::sax_parse(text, &tracker);
+    const auto [line, column] = line_and_column(text, tracker.error_offset());
+    throw bad_input(file + ": " + tracker.pointer() + ": number beyond the range of a double (line " +
+                    std::to_string(line) + ", column " + std::to_string(column) + ")");
   } catch (const nlohmann::json::parse_error& e) {
     // e.byte is 1-based and points just past the offending character.
-    const size_t end = std::min(text.size(), e.byte > 0 ? static_cast<size_t>(e.byte - 1) : size_t{0});
-    size_t line = 1, column = 1;
-    for (size_t i = 0; i < end; ++i) {
-      if (text[i] == '\n') {
-        ++line;
-        column = 1;
-      } else {
-        ++column;
-      }
-    }
+    const auto [line, column] = line_and_column(text, e.byte > 0 ? static_cast<size_t>(e.byte - 1) : size_t{0});
     std::string what = e.what();
     // nlohmann prefixes "[json.exception.parse_error.101] parse error at line L, column C: "
     const size_t colon = what.find(": ");
@@ -162,10 +234,11 @@ double JsonCursor::number() const {
   return x;
 }
 
-int JsonCursor::integer() const {
+int JsonCursor::integer_in(int lo, int hi) const {
   if (!m_in->is_number_integer()) type_error("an integer");
-  const auto x = m_in->get<long long>();
-  if (x < -2147483647LL || x > 2147483647LL) fail("integer out of range: " + m_in->dump());
+  // Compared as a double, exact for every int, so no 64-bit value wraps.
+  const double x = m_in->get<double>();
+  if (x < lo || x > hi) fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + m_in->dump());
   *m_out = *m_in;
   return static_cast<int>(x);
 }
@@ -182,38 +255,29 @@ std::string JsonCursor::string() const {
   return m_in->get<std::string>();
 }
 
-Eigen::Vector3d JsonCursor::vec3() const {
+Eigen::Vector3d JsonCursor::vec3_in(const Range& component) const {
   if (!m_in->is_array()) type_error("an array of 3 numbers");
   if (m_in->size() != 3) fail("expected 3 numbers [x, y, z], got " + std::to_string(m_in->size()));
   Eigen::Vector3d v;
   const auto items = elements(3);
-  for (int k = 0; k < 3; ++k) v[k] = items[static_cast<size_t>(k)].number();
+  for (int k = 0; k < 3; ++k) v[k] = items[static_cast<size_t>(k)].number_in(component);
   return v;
 }
 
-double JsonCursor::number_in(double lo, double hi, bool open_lo, bool open_hi) const {
+double JsonCursor::number_in(const Range& range) const {
   const double x = number();
-  const bool below = open_lo ? !(x > lo) : !(x >= lo);
-  const bool above = open_hi ? !(x < hi) : !(x <= hi);
-  if (below || above) {
-    std::string range;
-    if (std::isinf(hi)) range = (open_lo ? "> " : ">= ") + format_number(lo);
-    else
-      range = std::string("in ") + (open_lo ? "(" : "[") + format_number(lo) + ", " + format_number(hi) +
-              (open_hi ? ")" : "]");
-    fail("must be " + range + ", got " + format_number(x));
-  }
+  if (!range.contains(x)) fail("must be " + range.describe() + ", got " + short_number(x));
   return x;
 }
 
-double JsonCursor::number_or(const std::string& key, double fallback) const {
-  if (has(key)) return child(key).number();
+double JsonCursor::number_in_or(const std::string& key, double fallback, const Range& range) const {
+  if (has(key)) return child(key).number_in(range);
   (*m_out)[key] = fallback;
   return fallback;
 }
 
-int JsonCursor::integer_or(const std::string& key, int fallback) const {
-  if (has(key)) return child(key).integer();
+int JsonCursor::integer_in_or(const std::string& key, int fallback, int lo, int hi) const {
+  if (has(key)) return child(key).integer_in(lo, hi);
   (*m_out)[key] = fallback;
   return fallback;
 }
@@ -230,8 +294,9 @@ std::string JsonCursor::string_or(const std::string& key, const std::string& fal
   return fallback;
 }
 
-Eigen::Vector3d JsonCursor::vec3_or(const std::string& key, const Eigen::Vector3d& fallback) const {
-  if (has(key)) return child(key).vec3();
+Eigen::Vector3d JsonCursor::vec3_in_or(const std::string& key, const Eigen::Vector3d& fallback,
+                                       const Range& component) const {
+  if (has(key)) return child(key).vec3_in(component);
   (*m_out)[key] = {fallback.x(), fallback.y(), fallback.z()};
   return fallback;
 }

@@ -13,10 +13,13 @@
 #include <string_view>
 #include <vector>
 
+#include "cli/scene_limits.h"
+
 namespace recoil::cli {
 
 // Parses `text` (the contents of `file`); syntax errors throw bad_input as
-// "FILE:LINE:COLUMN: syntax error: ...".
+// "FILE:LINE:COLUMN: syntax error: ...", and a number beyond double range as
+// "FILE: /POINTER: ..." naming the field it was given for.
 nlohmann::json parse_json_text(const std::string& text, const std::string& file);
 
 // The closest of `candidates` to `word` when it is a plausible typo, else "".
@@ -48,22 +51,21 @@ class JsonCursor {
   // An array's elements (fails unless an array, optionally of `size` elements).
   std::vector<JsonCursor> elements(std::optional<size_t> size = std::nullopt) const;
 
-  // Leaves: type-checked, copied to the resolved document.
-  double number() const;
-  int integer() const;
+  // Leaves: type-checked, range-checked, copied to the resolved document.
+  // Every number a scene gives has a stated range (cli/scene_limits.h).
   bool boolean() const;
   std::string string() const;
-  Eigen::Vector3d vec3() const;
-  // number() checked against [lo, hi] (closed unless told otherwise).
-  double number_in(double lo, double hi, bool open_lo = false, bool open_hi = false) const;
-  double positive() const { return number_in(0.0, INFINITY, true, false); }
+  double number_in(const Range& range) const;
+  int integer_in(int lo, int hi) const;
+  // Each of the three components in `component`.
+  Eigen::Vector3d vec3_in(const Range& component) const;
 
   // Optional members: the default is used and recorded when absent.
-  double number_or(const std::string& key, double fallback) const;
-  int integer_or(const std::string& key, int fallback) const;
+  double number_in_or(const std::string& key, double fallback, const Range& range) const;
+  int integer_in_or(const std::string& key, int fallback, int lo, int hi) const;
   bool boolean_or(const std::string& key, bool fallback) const;
   std::string string_or(const std::string& key, const std::string& fallback) const;
-  Eigen::Vector3d vec3_or(const std::string& key, const Eigen::Vector3d& fallback) const;
+  Eigen::Vector3d vec3_in_or(const std::string& key, const Eigen::Vector3d& fallback, const Range& component) const;
 
   // Records `value` in the resolved document in place of what was read
   // (e.g. an absolute path for a relative one).
@@ -71,6 +73,7 @@ class JsonCursor {
 
  private:
   [[noreturn]] void type_error(const char* expected) const;
+  double number() const;  // finite, not yet range-checked
 
   const nlohmann::json* m_in;
   nlohmann::json* m_out;

@@ -17,6 +17,9 @@ int main(int argc, char** argv) {
   cli::GlobalOptions global;
   app.add_flag("-q,--quiet", global.quiet, "No progress bar or summary lines")->configurable(false);
   app.add_flag("--log-json", global.log_json, "Machine-readable progress lines (JSON) on stderr");
+  app.add_option("--max-memory", global.max_memory_gib,
+                 "GiB a run may use: one estimated to need more is refused before it starts (default: 80% of RAM)")
+      ->check(CLI::Range(0.01, 1e6));
   cli::Action action;
   cli::add_run_command(app, global, action);
   cli::add_drop_command(app, global, action);
@@ -27,8 +30,9 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    const int code = app.exit(e);
-    return code == 0 ? 0 : static_cast<int>(ErrorKind::bad_input);
+    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
+    std::cerr << "recoil: error: " << e.what() << " (see --help)" << std::endl;
+    return static_cast<int>(ErrorKind::bad_input);
   }
   try {
     return action ? action() : 0;

@@ -2,6 +2,7 @@
 
 #include <cstdio>
 
+#include "cli/scene_limits.h"
 #include "core/error.h"
 
 namespace recoil::cli {
@@ -10,7 +11,8 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
   const std::string group = "Rendering";
   command.add_option("--resolution", options.resolution, "Frame size WxH in pixels")
       ->group(group)->capture_default_str();
-  command.add_option("--fps", options.fps, "Frames per second of the output")->group(group)->capture_default_str();
+  command.add_option("--fps", options.fps, "Frames per second of the output")
+      ->check(CLI::Range(kFpsRange.lo, kFpsRange.hi))->group(group)->capture_default_str();
   command.add_option("--msaa", options.msaa, "Anti-aliasing samples per pixel: 0, 2 or 4")
       ->check(CLI::IsMember({0, 2, 4}))->group(group)->capture_default_str();
   command.add_flag("--no-shadows", options.no_shadows, "Skip the key light's shadow (faster)")->group(group);
@@ -20,7 +22,7 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
   command.add_option("--color", options.color, "Colour of the bodies, #rrggbb (default: a palette)")->group(group);
   command.add_option("--camera-distance", options.camera_distance,
                      "Camera distance from its target in metres (default: fit the scene)")
-      ->check(CLI::NonNegativeNumber)->group(group);
+      ->check(CLI::Range(kCameraDistanceRange.lo, kCameraDistanceRange.hi))->group(group);
   command.add_option("--png-level", options.png_level, "PNG compression 0 (fastest) to 9 (smallest)")
       ->check(CLI::Range(0, 9))->group(group)->capture_default_str();
 }
@@ -48,7 +50,7 @@ render::RenderSettings to_render_settings(const RenderOptions& options) {
   settings.wireframe = options.wireframe;
   if (options.background == "transparent") settings.transparent_background = true;
   else settings.background = parse_color(options.background, "--background");
-  if (!(options.fps > 0 && options.fps <= 1000)) throw bad_input("--fps: must be in (0, 1000]");
+  if (!kFpsRange.contains(options.fps)) throw bad_input("--fps: must be " + kFpsRange.describe());
   return settings;
 }
 

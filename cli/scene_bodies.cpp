@@ -5,7 +5,9 @@
 #include <map>
 #include <numbers>
 #include <optional>
+#include <unordered_set>
 
+#include "cli/format_number.h"
 #include "cli/up_axis.h"
 #include "core/error.h"
 #include "sim/geometry/boundary.h"
@@ -61,13 +63,13 @@ SceneBodyType parse_type(const JsonCursor& c) {
 sim::FrictionDesc parse_friction(const JsonCursor& c) {
   sim::FrictionDesc f;
   if (c.is_number()) {
-    f.static_coefficient = f.kinetic_coefficient = c.number_in(0.0, 10.0);
+    f.static_coefficient = f.kinetic_coefficient = c.number_in(kFrictionRange);
     return f;
   }
   c.expect_object({"static", "kinetic"});
-  f.static_coefficient = c.child("static").number_in(0.0, 10.0);
+  f.static_coefficient = c.child("static").number_in(kFrictionRange);
   const JsonCursor kinetic = c.child("kinetic");
-  f.kinetic_coefficient = kinetic.number_in(0.0, 10.0);
+  f.kinetic_coefficient = kinetic.number_in(kFrictionRange);
   if (f.kinetic_coefficient > f.static_coefficient)
     kinetic.fail("must be <= the static coefficient " + c.child("static").value().dump());
   return f;
@@ -76,19 +78,20 @@ sim::FrictionDesc parse_friction(const JsonCursor& c) {
 sim::Transform parse_transform(const JsonCursor& c) {
   c.expect_object({"position", "rotation", "scale"});
   sim::Transform t;
-  t.position = c.vec3_or("position", Eigen::Vector3d::Zero());
-  t.rotation = c.vec3_or("rotation", Eigen::Vector3d::Zero());
+  t.position = c.vec3_in_or("position", Eigen::Vector3d::Zero(), kCoordinateRange);
+  t.rotation = c.vec3_in_or("rotation", Eigen::Vector3d::Zero(), kAngleRange);
   if (c.has("scale")) {
     const JsonCursor s = c.child("scale");
     if (s.is_number()) {
-      t.scale = Eigen::Vector3d::Constant(s.number_in(0.0, INFINITY, true));
+      t.scale = Eigen::Vector3d::Constant(s.number_in(kScaleRange));
     } else {
-      t.scale = s.vec3();
+      t.scale = s.vec3_in({-kScaleRange.hi, kScaleRange.hi});
       for (int k = 0; k < 3; ++k)
-        if (!(t.scale[k] != 0.0)) s.fail("scale components must be non-zero");
+        if (!kScaleRange.contains(std::abs(t.scale[k])))
+          s.fail("each component's magnitude must be " + kScaleRange.describe());
     }
   } else {
-    c.number_or("scale", 1.0);
+    c.number_in_or("scale", 1.0, kScaleRange);
   }
   return t;
 }
@@ -100,17 +103,18 @@ sim::TriMesh parse_primitive(const JsonCursor& c, std::optional<Eigen::Vector3d>
   if (c.value().size() != 1) c.fail("expected exactly one of box, sphere, cylinder, capsule, torus");
   if (c.has("box")) {
     const JsonCursor box = c.child("box");
-    const Eigen::Vector3d size = box.vec3();
-    if (!(size.minCoeff() > 0.0)) box.fail("edge lengths must be > 0");
+    const Eigen::Vector3d size = box.vec3_in(kSizeRange);
     box_size = size;
     return sim::make_box(size);
   }
-  if (c.has("sphere")) return sim::make_sphere(c.child("sphere").positive());
+  if (c.has("sphere")) return sim::make_sphere(c.child("sphere").number_in(kSizeRange));
   auto radius_height = [&](const char* key, double& r, double& h) {
     const JsonCursor p = c.child(key);
     p.expect_object({"radius", "height"});
-    r = p.child("radius").positive();
-    h = p.child("height").number_in(0.0, INFINITY, std::string(key) == "cylinder");
+    r = p.child("radius").number_in(kSizeRange);
+    // A capsule of height 0 is a sphere; a cylinder needs a height.
+    h = std::string(key) == "cylinder" ? p.child("height").number_in(kSizeRange)
+                                       : p.child("height").number_in({0.0, kSizeRange.hi});
   };
   double r = 0, h = 0;
   if (c.has("cylinder")) {
@@ -123,9 +127,9 @@ sim::TriMesh parse_primitive(const JsonCursor& c, std::optional<Eigen::Vector3d>
   }
   const JsonCursor torus = c.child("torus");
   torus.expect_object({"major", "minor"});
-  const double major = torus.child("major").positive();
+  const double major = torus.child("major").number_in(kSizeRange);
   const JsonCursor minor_c = torus.child("minor");
-  const double minor = minor_c.positive();
+  const double minor = minor_c.number_in(kSizeRange);
   if (!(minor < major)) minor_c.fail("must be < major (" + torus.child("major").value().dump() + ")");
   return sim::make_torus(major, minor);
 }
@@ -168,6 +172,14 @@ struct Geometry {
 // scene with a thousand copies of one mesh (`recoil drop --count 1000`)
 // imports it once.
 using MeshFiles = std::map<fs::path, Geometry>;
+
+// What parsing one body needs to know of those before it, kept as it goes so
+// that a scene of a million bodies parses in linear time.
+struct BodiesSoFar {
+  MeshFiles files;
+  std::unordered_set<std::string> names;
+  int mesh_bodies = 0;  // bodies other than planes, for the palette
+};
 
 // A mesh file as read, cached unrotated (bodies may give it different "up"s).
 Geometry read_mesh_file(const JsonCursor& c, const fs::path& base_dir, MeshFiles& files) {
@@ -224,14 +236,10 @@ void parse_material(const JsonCursor& c, sim::Material& m) {
   if (model == "corotated") m.model = sim::MaterialModel::corotated;
   else if (model == "neohookean") m.model = sim::MaterialModel::neo_hookean;
   else c.child("model").fail("unknown material model \"" + model + "\" (corotated or neohookean)");
-  auto field = [&](const char* key, double fallback, double lo, double hi, bool open_lo, bool open_hi) {
-    if (!c.has(key)) return c.number_or(key, fallback);
-    return c.child(key).number_in(lo, hi, open_lo, open_hi);
-  };
-  m.youngs_modulus = field("youngs_modulus", 1e5, 0.0, INFINITY, true, false);
-  m.poisson_ratio = field("poisson_ratio", 0.3, 0.0, 0.5, false, true);
-  m.density = field("density", 1000.0, 0.0, INFINITY, true, false);
-  m.damping_ratio = field("damping", 0.0, 0.0, 10.0, false, false);
+  m.youngs_modulus = c.number_in_or("youngs_modulus", 1e5, kYoungsModulusRange);
+  m.poisson_ratio = c.number_in_or("poisson_ratio", 0.3, {0.0, 0.5, false, true});
+  m.density = c.number_in_or("density", 1000.0, kDensityRange);
+  m.damping_ratio = c.number_in_or("damping", 0.0, {0.0, 10.0});
 }
 
 // `collision`: "mesh" (the mesh itself), {"triangles": N} or
@@ -246,19 +254,28 @@ sim::CollisionSurfaceDesc parse_collision(const JsonCursor& c) {
   c.expect_object({"triangles", "edge_length"});
   if (c.has("triangles") && c.has("edge_length")) c.fail("give triangles or edge_length, not both");
   if (c.has("triangles")) {
-    out.max_triangles = c.child("triangles").integer();
-    if (out.max_triangles < 4) c.child("triangles").fail("must be >= 4");
+    out.max_triangles = c.child("triangles").integer_in(4, 100'000'000);
   } else if (c.has("edge_length")) {
-    out.edge_length = c.child("edge_length").positive();
+    out.edge_length = c.child("edge_length").number_in(kSizeRange);
   }
   return out;
+}
+
+// A body placed by its transform must stay inside the world's coordinate
+// range; rotation keeps lengths, so scale and translation bound it.
+void check_placed_extent(const JsonCursor& body, const sim::TriMesh& mesh, const sim::Transform& transform) {
+  const double reach = (mesh.vertices.array().rowwise() * transform.scale.transpose().array()).matrix().rowwise().norm().maxCoeff() +
+                       transform.position.norm();
+  if (!(reach <= kCoordinateRange.hi))
+    body.fail("reaches " + format_number("%.3g", reach) + " m from the origin once placed by its transform; at most " +
+              format_number("%g", kCoordinateRange.hi) + " m");
 }
 
 render::Rgb parse_body_color(const JsonCursor& c) {
   return parse_color(c.string(), c.file() + ": " + c.pointer());
 }
 
-void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, MeshFiles& files, SceneDesc& scene) {
+void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, BodiesSoFar& so_far, SceneDesc& scene) {
   body.expect_object(kAllBodyKeys);
   const SceneBodyType type = parse_type(body.child("type"));
   const std::vector<std::string> allowed = keys_for(type);
@@ -270,16 +287,16 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
   out.type = type;
   out.pointer = body.pointer();
   out.name = body.string_or("name", std::string(to_string(type)) + std::to_string(index));
-  if (out.name.empty()) body.child("name").fail("must not be empty");
-  if (scene.find(out.name)) body.child("name").fail("duplicate body name \"" + out.name + "\"");
+  if (const std::string why = unsafe_name_reason(out.name); !why.empty()) body.child("name").fail(why);
+  if (!so_far.names.insert(out.name).second) body.child("name").fail("duplicate body name \"" + out.name + "\"");
   const sim::FrictionDesc friction = body.has("friction") ? parse_friction(body.child("friction")) : sim::FrictionDesc{};
-  if (!body.has("friction")) body.number_or("friction", friction.static_coefficient);  // records the default
+  if (!body.has("friction")) body.number_in_or("friction", friction.static_coefficient, kFrictionRange);  // records the default
 
   if (type == SceneBodyType::plane) {
     sim::PlaneDesc plane;
     plane.name = out.name;
-    plane.point = body.vec3_or("point", Eigen::Vector3d::Zero());
-    plane.normal = body.vec3_or("normal", Eigen::Vector3d::UnitY());
+    plane.point = body.vec3_in_or("point", Eigen::Vector3d::Zero(), kCoordinateRange);
+    plane.normal = body.vec3_in_or("normal", Eigen::Vector3d::UnitY(), kCoordinateRange);
     if (!(plane.normal.norm() > 1e-12)) body.child("normal").fail("must not be zero");
     plane.friction = friction;
     out.index = static_cast<int>(scene.world.planes.size());
@@ -288,20 +305,18 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     return;
   }
 
-  const int mesh_bodies = static_cast<int>(std::count_if(scene.bodies.begin(), scene.bodies.end(),
-                                                         [](const SceneBody& b) { return b.type != SceneBodyType::plane; }));
-  out.color = body.has("color") ? parse_body_color(body.child("color")) : palette_color(mesh_bodies);
+  out.color = body.has("color") ? parse_body_color(body.child("color")) : palette_color(so_far.mesh_bodies++);
   if (!body.has("color")) {
     char hex[8];
     std::snprintf(hex, sizeof(hex), "#%02x%02x%02x", static_cast<int>(std::lround(out.color[0] * 255)),
                   static_cast<int>(std::lround(out.color[1] * 255)), static_cast<int>(std::lround(out.color[2] * 255)));
     body.string_or("color", hex);
   }
-  out.opacity = static_cast<float>(body.has("opacity") ? body.child("opacity").number_in(0.0, 1.0)
-                                                       : body.number_or("opacity", 1.0));
-  Geometry geometry = parse_geometry(body, base_dir, files);
+  out.opacity = static_cast<float>(body.number_in_or("opacity", 1.0, {0.0, 1.0}));
+  Geometry geometry = parse_geometry(body, base_dir, so_far.files);
   out.open_mesh = geometry.open;
   const sim::Transform transform = parse_transform(body.child_or_empty("transform"));
+  check_placed_extent(body, geometry.surface, transform);
 
   if (type == SceneBodyType::deformable) {
     sim::DeformableBodyDesc d;
@@ -310,7 +325,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     d.static_friction = friction.static_coefficient;
     d.kinetic_friction = friction.kinetic_coefficient;
     parse_material(body.child_or_empty("material"), d.material);
-    d.velocity = body.vec3_or("velocity", Eigen::Vector3d::Zero());
+    d.velocity = body.vec3_in_or("velocity", Eigen::Vector3d::Zero(), kSpeedRange);
     if (body.has("collision")) d.collision = parse_collision(body.child("collision"));
     d.self_contact = body.boolean_or("self_contact", true);
     // A tetrahedral mesh file gives the tets; its boundary is the surface.
@@ -323,8 +338,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
       if (tets.has("resolution") == tets.has("file")) tets.fail("give either \"resolution\" or \"file\"");
       if (tets.has("resolution")) {
         const JsonCursor r = tets.child("resolution");
-        d.resolution = r.integer();
-        if (d.resolution < 1 || d.resolution > 256) r.fail("must be in [1, 256], got " + std::to_string(d.resolution));
+        d.resolution = r.integer_in(1, 256);
       } else {
         const JsonCursor f = tets.child("file");
         const fs::path path = resolve_file(f, base_dir);
@@ -334,7 +348,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
         apply_up(geometry.up, d.tets);  // the tets share the mesh file's axes
       }
     } else if (d.tets.empty()) {
-      body.child_or_empty("tets").integer_or("resolution", d.resolution);
+      body.child_or_empty("tets").integer_in_or("resolution", d.resolution, 1, 256);
     }
     // A deformable box's faces get `resolution` cells per edge, the lattice's
     // spacing for a cube, in place of the primitive's default 8: a surface
@@ -347,7 +361,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     if (body.has("pinned")) {
       const JsonCursor p = body.child("pinned");
       p.expect_object({"min", "max"});
-      sim::PinBox pin{p.child("min").vec3(), p.child("max").vec3()};
+      sim::PinBox pin{p.child("min").vec3_in(kCoordinateRange), p.child("max").vec3_in(kCoordinateRange)};
       if (!(pin.min.array() <= pin.max.array()).all()) p.fail("min must be <= max in every coordinate");
       d.pinned = pin;
     }
@@ -364,14 +378,14 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
     r.friction = friction;
     if (body.has("collision")) r.collision = parse_collision(body.child("collision"));
     if (type == SceneBodyType::rigid) {
-      r.density = body.has("density") ? body.child("density").positive() : body.number_or("density", 1000.0);
-      r.velocity = body.vec3_or("velocity", Eigen::Vector3d::Zero());
-      r.angular_velocity = body.vec3_or("angular_velocity", Eigen::Vector3d::Zero());
+      r.density = body.number_in_or("density", 1000.0, kDensityRange);
+      r.velocity = body.vec3_in_or("velocity", Eigen::Vector3d::Zero(), kSpeedRange);
+      r.angular_velocity = body.vec3_in_or("angular_velocity", Eigen::Vector3d::Zero(), kAngularSpeedRange);
     } else if (type == SceneBodyType::kinematic) {
       const JsonCursor m = body.child_or_empty("motion");
       m.expect_object({"velocity", "angular_velocity"});
-      r.velocity = m.vec3_or("velocity", Eigen::Vector3d::Zero());
-      r.angular_velocity = m.vec3_or("angular_velocity", Eigen::Vector3d::Zero());
+      r.velocity = m.vec3_in_or("velocity", Eigen::Vector3d::Zero(), kSpeedRange);
+      r.angular_velocity = m.vec3_in_or("angular_velocity", Eigen::Vector3d::Zero(), kAngularSpeedRange);
     }
     out.index = static_cast<int>(scene.world.rigid_bodies.size());
     scene.world.rigid_bodies.push_back(std::move(r));
@@ -382,8 +396,9 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Mes
 }  // namespace
 
 void parse_bodies(const std::vector<JsonCursor>& bodies, const fs::path& base_dir, SceneDesc& scene) {
-  MeshFiles files;
-  for (size_t i = 0; i < bodies.size(); ++i) parse_body(bodies[i], static_cast<int>(i), base_dir, files, scene);
+  BodiesSoFar so_far;
+  scene.bodies.reserve(bodies.size());
+  for (size_t i = 0; i < bodies.size(); ++i) parse_body(bodies[i], static_cast<int>(i), base_dir, so_far, scene);
 }
 
 }  // namespace recoil::cli

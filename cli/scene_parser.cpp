@@ -15,9 +15,9 @@ namespace {
 void parse_simulation(const JsonCursor& c, SceneDesc& scene) {
   c.expect_object({"dt", "duration", "gravity", "solver", "contact"});
   sim::WorldDesc& w = scene.world;
-  w.dt = c.has("dt") ? c.child("dt").number_in(0.0, 1.0, true) : c.number_or("dt", w.dt);
-  scene.duration = c.has("duration") ? c.child("duration").number_in(0.0, 1e6) : c.number_or("duration", 3.0);
-  w.gravity = c.vec3_or("gravity", w.gravity);
+  w.dt = c.number_in_or("dt", w.dt, kTimeStepRange);
+  scene.duration = c.number_in_or("duration", 3.0, kDurationRange);
+  w.gravity = c.vec3_in_or("gravity", w.gravity, kAccelerationRange);
 
   const JsonCursor solver = c.child_or_empty("solver");
   solver.expect_object({"method", "tolerance", "max_iterations"});
@@ -26,20 +26,13 @@ void parse_simulation(const JsonCursor& c, SceneDesc& scene) {
   else if (method == "cr-plain") w.contact.solver.method = sim::SolverMethod::cr_plain;
   else if (method == "pgs") w.contact.solver.method = sim::SolverMethod::pgs;
   else solver.child("method").fail("unknown solver \"" + method + "\" (cr, pgs or cr-plain)");
-  w.contact.solver.tolerance = solver.has("tolerance") ? solver.child("tolerance").number_in(0.0, 1.0, true)
-                                                       : solver.number_or("tolerance", w.contact.solver.tolerance);
-  if (solver.has("max_iterations")) {
-    const JsonCursor m = solver.child("max_iterations");
-    w.contact.solver.max_iterations = m.integer();
-    if (w.contact.solver.max_iterations < 1) m.fail("must be >= 1");
-  } else {
-    solver.integer_or("max_iterations", w.contact.solver.max_iterations);
-  }
+  w.contact.solver.tolerance = solver.number_in_or("tolerance", w.contact.solver.tolerance, kToleranceRange);
+  w.contact.solver.max_iterations =
+      solver.integer_in_or("max_iterations", w.contact.solver.max_iterations, 1, kMaxIterations);
 
   const JsonCursor contact = c.child_or_empty("contact");
   contact.expect_object({"margin"});
-  w.contact.margin = contact.has("margin") ? contact.child("margin").number_in(0.0, 1.0, true)
-                                           : contact.number_or("margin", w.contact.margin);
+  w.contact.margin = contact.number_in_or("margin", w.contact.margin, kMarginRange);
 }
 
 void parse_camera(const JsonCursor& c, SceneDesc& scene) {
@@ -59,17 +52,17 @@ void parse_camera(const JsonCursor& c, SceneDesc& scene) {
   only_for("body", CameraMode::follow, "follow");
   if (c.has("position")) {
     cam.has_position = true;
-    cam.position = c.child("position").vec3();
+    cam.position = c.child("position").vec3_in(kCoordinateRange);
   }
   if (c.has("target")) {
     cam.has_target = true;
-    cam.target = c.child("target").vec3();
+    cam.target = c.child("target").vec3_in(kCoordinateRange);
   }
-  cam.fov = c.has("fov") ? c.child("fov").number_in(1.0, 170.0) : c.number_or("fov", cam.fov);
-  cam.azimuth = c.number_or("azimuth", cam.azimuth);
-  cam.elevation = c.has("elevation") ? c.child("elevation").number_in(-89.0, 89.0) : c.number_or("elevation", cam.elevation);
-  cam.distance = c.has("distance") ? c.child("distance").positive() : cam.distance;
-  if (cam.mode == CameraMode::orbit) cam.turns = c.number_or("turns", cam.turns);
+  cam.fov = c.number_in_or("fov", cam.fov, {1.0, 170.0});
+  cam.azimuth = c.number_in_or("azimuth", cam.azimuth, kAngleRange);
+  cam.elevation = c.number_in_or("elevation", cam.elevation, {-89.0, 89.0});
+  cam.distance = c.has("distance") ? c.child("distance").number_in(kCameraDistanceRange) : cam.distance;
+  if (cam.mode == CameraMode::orbit) cam.turns = c.number_in_or("turns", cam.turns, kTurnsRange);
   if (cam.mode == CameraMode::follow) {
     const JsonCursor body = c.child("body");
     cam.body = body.string();
@@ -87,32 +80,17 @@ void parse_render(const JsonCursor& c, SceneDesc& scene) {
   if (c.has("resolution")) {
     const auto wh = c.child("resolution").elements(2);
     int size[2];
-    for (int k = 0; k < 2; ++k) {
-      size[k] = wh[static_cast<size_t>(k)].integer();
-      if (size[k] < 16 || size[k] > 16384)
-        wh[static_cast<size_t>(k)].fail("must be in [16, 16384], got " + std::to_string(size[k]));
-    }
+    for (int k = 0; k < 2; ++k) size[k] = wh[static_cast<size_t>(k)].integer_in(16, 16384);
     r.resolution = std::to_string(size[0]) + "x" + std::to_string(size[1]);
   } else {
     c.child_or_empty("resolution").resolve_as(nlohmann::json::array({1280, 720}));
   }
-  r.fps = c.has("fps") ? c.child("fps").number_in(0.0, 1000.0, true) : c.number_or("fps", r.fps);
-  if (c.has("msaa")) {
-    const JsonCursor m = c.child("msaa");
-    r.msaa = m.integer();
-    if (r.msaa != 0 && r.msaa != 2 && r.msaa != 4) m.fail("must be 0, 2 or 4, got " + std::to_string(r.msaa));
-  } else {
-    c.integer_or("msaa", r.msaa);
-  }
+  r.fps = c.number_in_or("fps", r.fps, kFpsRange);
+  r.msaa = c.integer_in_or("msaa", r.msaa, 0, 4);
+  if (r.msaa == 1 || r.msaa == 3) c.child("msaa").fail("must be 0, 2 or 4, got " + std::to_string(r.msaa));
   r.no_shadows = !c.boolean_or("shadows", true);
   r.wireframe = c.boolean_or("wireframe", false);
-  if (c.has("png_level")) {
-    const JsonCursor p = c.child("png_level");
-    r.png_level = p.integer();
-    if (r.png_level < 0 || r.png_level > 9) p.fail("must be in [0, 9], got " + std::to_string(r.png_level));
-  } else {
-    c.integer_or("png_level", r.png_level);
-  }
+  r.png_level = c.integer_in_or("png_level", r.png_level, 0, 9);
   r.background = c.string_or("background", r.background);
   if (r.background != "transparent") parse_color(r.background, c.file() + ": " + c.pointer() + "/background");
   const JsonCursor ground = c.child_or_empty("ground");
@@ -161,14 +139,17 @@ SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, c
   root.expect_object({"recoil", "name", "description", "simulation", "bodies", "render"});
   if (!root.has("recoil")) root.fail("missing \"recoil\": 1 (the scene format version)");
   const JsonCursor version = root.child("recoil");
-  if (version.integer() != 1)
+  if (version.integer_in(0, 1 << 30) != 1)
     version.fail("unsupported scene format version " + version.value().dump() + " (this recoil reads version 1)");
   scene.name = root.string_or("name", fs::path(file).stem().string());
-  if (scene.name.empty() || scene.name.find('/') != std::string::npos) root.child("name").fail("must be a non-empty name without '/'");
+  if (const std::string why = unsafe_name_reason(scene.name); !why.empty())
+    (root.has("name") ? root.child("name") : root).fail(root.has("name") ? why : "the file's name " + why + "; give \"name\"");
   if (root.has("description")) root.child("description").string();
   parse_simulation(root.child_or_empty("simulation"), scene);
   const std::vector<JsonCursor> bodies = root.child("bodies").elements();
   if (bodies.empty()) root.child("bodies").fail("a scene needs at least one body");
+  if (bodies.size() > static_cast<size_t>(kMaxBodies))
+    root.child("bodies").fail(std::to_string(bodies.size()) + " bodies; at most " + std::to_string(kMaxBodies));
   parse_bodies(bodies, base_dir, scene);
   parse_render(root.child_or_empty("render"), scene);
   return scene;

@@ -17,6 +17,7 @@
 #include "cli/run_report.h"
 #include "cli/scene_view.h"
 #include "cli/video_encoder.h"
+#include "cli/work_limits.h"
 #include "core/error.h"
 #include "render/frame_writer.h"
 #include "render/png.h"
@@ -106,6 +107,7 @@ long frame_step(int frame, double fps, double dt) { return std::lround((frame - 
 RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const auto start = Clock::now();
   const SceneDesc& scene = job.scene;
+  check_work_limits(scene, job.render, memory_limit_bytes(global.max_memory_gib));
   const double fps = scene.render.fps, dt = scene.world.dt;
   const std::vector<int> selected = job.frames.empty() ? all_frames(scene.frame_count()) : job.frames;
   const int last_frame = selected.back();

@@ -1,6 +1,7 @@
 #include "render/render_target.h"
 
 #include <algorithm>
+#include <cstdio>
 #include <string>
 
 #include "core/error.h"
@@ -8,11 +9,17 @@
 namespace recoil::render {
 namespace {
 
-void check_complete(const char* what) {
+// A framebuffer the driver will not allocate is a request too large for this
+// machine's renderer (llvmpipe caps each buffer), so it is the user's to change.
+void check_complete(const char* what, int width, int height, int samples) {
   const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
   if (status != GL_FRAMEBUFFER_COMPLETE) {
-    throw Error(ErrorKind::internal, std::string("the OpenGL driver refused the ") + what +
-                                         " framebuffer (status " + std::to_string(status) + ")");
+    const double gib = 8.0 * width * height * std::max(1, samples) / (1024.0 * 1024.0 * 1024.0);
+    char size[32];
+    std::snprintf(size, sizeof size, "%.1f", gib);
+    throw bad_input(std::string("the OpenGL driver cannot allocate the ") + what + " framebuffer of " +
+                    std::to_string(width) + "x" + std::to_string(height) + " pixels at " + std::to_string(samples) +
+                    " samples (" + size + " GiB, status " + std::to_string(status) + "); lower the resolution or msaa");
   }
 }
 
@@ -50,14 +57,14 @@ RenderTarget::RenderTarget(int width, int height, int msaa)
   glBindFramebuffer(GL_FRAMEBUFFER, m_draw.get());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_draw_color.get());
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_draw_depth.get());
-  check_complete("multisampled colour and depth");
+  check_complete("multisampled colour and depth", width, height, msaa);
   if (msaa > 0) {
     m_resolve_color = gl::Renderbuffer::create();
     m_resolve = gl::Framebuffer::create();
     storage(m_resolve_color.get(), 0, GL_SRGB8_ALPHA8, width, height);
     glBindFramebuffer(GL_FRAMEBUFFER, m_resolve.get());
     glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_resolve_color.get());
-    check_complete("resolve");
+    check_complete("resolve", width, height, 0);
   }
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }

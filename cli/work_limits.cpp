@@ -1,0 +1,99 @@
+#include "cli/work_limits.h"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <thread>
+
+#include "cli/format_number.h"
+#include "cli/render_options.h"
+#include "cli/scene_limits.h"
+#include "core/error.h"
+
+namespace recoil::cli {
+namespace {
+
+// Peak memory per tetrahedron of a deformable body, measured on a falling
+// cube (resolution 48: 664 000 tets, 394 MB peak, about 500 B each) and
+// rounded up for the contact stage's working set.
+constexpr double kBytesPerTet = 640.0;
+
+// Upper bound on the tets a lattice of `resolution` cells along the longest
+// side gives a body: six per cell of the box around its scaled surface.
+double lattice_tets(const sim::DeformableBodyDesc& body) {
+  if (!body.tets.empty()) return body.tets.num_tets();
+  if (body.mesh.vertices.rows() == 0) return 0.0;
+  const Eigen::Vector3d extent = ((body.mesh.vertices.colwise().maxCoeff() - body.mesh.vertices.colwise().minCoeff())
+                                      .transpose()
+                                      .array() *
+                                  body.transform.scale.array().abs())
+                                     .matrix();
+  const double longest = extent.maxCoeff();
+  if (!(longest > 0.0)) return 0.0;
+  double cells = 1.0;
+  for (int k = 0; k < 3; ++k) cells *= std::ceil(body.resolution * extent[k] / longest) + 1.0;
+  return 6.0 * cells;
+}
+
+std::string gib(double bytes) { return format_number("%.1f", bytes / (1024.0 * 1024.0 * 1024.0)) + " GiB"; }
+
+}  // namespace
+
+double memory_limit_bytes(double max_memory_gib) {
+  if (max_memory_gib > 0.0) return max_memory_gib * 1024.0 * 1024.0 * 1024.0;
+  const double pages = static_cast<double>(::sysconf(_SC_PHYS_PAGES));
+  const double page = static_cast<double>(::sysconf(_SC_PAGESIZE));
+  return pages > 0 && page > 0 ? 0.8 * pages * page : INFINITY;
+}
+
+MemoryEstimate estimate_memory(const SceneDesc& scene, bool render) {
+  MemoryEstimate estimate;
+  auto add = [&](double bytes, const std::string& field, const std::string& what) {
+    estimate.bytes += bytes;
+    if (bytes > estimate.largest_bytes) {
+      estimate.largest_bytes = bytes;
+      estimate.largest_field = field;
+      estimate.largest_what = what;
+    }
+  };
+  for (const SceneBody& body : scene.bodies) {
+    if (body.type != SceneBodyType::deformable) continue;
+    const sim::DeformableBodyDesc& desc = scene.world.bodies[static_cast<size_t>(body.index)];
+    const double tets = lattice_tets(desc);
+    const std::string field = body.pointer + (desc.tets.empty() ? "/tets/resolution" : "/mesh");
+    add(tets * kBytesPerTet, field, format_number("%.3g", tets / 1e6) + " million tetrahedra");
+  }
+  if (render) {
+    const render::RenderSettings settings = to_render_settings(scene.render);
+    const double pixels = static_cast<double>(settings.width) * settings.height;
+    // Colour and depth per sample, a resolved copy, and the frames waiting in
+    // the encoder queue (one per encoder thread and twice as many queued).
+    const int encoders = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
+    const double bytes = pixels * (8.0 * std::max(1, scene.render.msaa) + 4.0 + 4.0 * (3 * encoders + 1));
+    add(bytes, "/render/resolution",
+        scene.render.resolution + " pixels at msaa " + std::to_string(scene.render.msaa));
+  }
+  return estimate;
+}
+
+void check_work_limits(const SceneDesc& scene, bool render, double memory_limit) {
+  const std::string file = scene.file.empty() ? scene.name : scene.file.string();
+  const double steps = scene.duration / scene.world.dt;
+  if (steps > static_cast<double>(kMaxSteps))
+    throw bad_input(file + ": /simulation/duration: " + format_number("%g", scene.duration) + " s at dt " +
+                    format_number("%g", scene.world.dt) + " s is " + format_number("%.3g", steps) +
+                    " steps; at most " + format_number("%.0f", static_cast<double>(kMaxSteps)));
+  const double frames = std::floor(scene.duration * scene.render.fps + 1e-9) + 1.0;
+  if (frames > kMaxFrames)
+    throw bad_input(file + ": /simulation/duration: " + format_number("%g", scene.duration) + " s at " +
+                    format_number("%g", scene.render.fps) + " fps is " + format_number("%.3g", frames) +
+                    " frames; at most " + std::to_string(kMaxFrames));
+  const MemoryEstimate memory = estimate_memory(scene, render);
+  if (memory.bytes > memory_limit)
+    throw bad_input(file + ": " + memory.largest_field + ": the run needs about " + gib(memory.bytes) + " (" +
+                    gib(memory.largest_bytes) + " for " + memory.largest_what + "), more than the " +
+                    gib(memory_limit) + " allowed (--max-memory)");
+}
+
+}  // namespace recoil::cli
