@@ -3,11 +3,13 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/interrupt.h"
 #include "cli/output_dir.h"
 #include "cli/progress.h"
 #include "cli/render_options.h"
 #include "cli/turntable.h"
 #include "cli/up_axis.h"
+#include "core/error.h"
 #include "sim/geometry/mesh_import.h"
 
 namespace recoil::cli {
@@ -36,9 +38,15 @@ int run_turntable(const TurntableOptions& options, const GlobalOptions& global) 
   sim::TriMesh mesh = sim::import_surface(options.mesh);
   apply_up(options.up, mesh);
   ensure_output_dir(job.output_dir);
+  const InterruptScope interrupts;
   Progress progress(global, "turntable", options.frames);
-  render_turntable(std::move(mesh), job, [&](int done) { progress.update(done); });
+  int frames_done = 0;
+  render_turntable(std::move(mesh), job, [&](int done) { progress.update(frames_done = done); });
   progress.finish();
+  if (const int sig = pending_interrupt())
+    throw Interrupted(sig, "interrupted by " + signal_name(sig) + " after " + std::to_string(frames_done) +
+                               " of " + std::to_string(options.frames) + " frames; those are whole in " +
+                               job.output_dir.string());
   if (!global.quiet) std::cerr << "recoil: wrote " << options.frames << " frames to " << job.output_dir.string() << "\n";
   return 0;
 }

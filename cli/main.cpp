@@ -36,6 +36,9 @@ int main(int argc, char** argv) {
   }
   try {
     return action ? action() : 0;
+  } catch (const Interrupted& e) {
+    std::cerr << "recoil: " << e.what() << std::endl;
+    return e.exit_code();
   } catch (const Error& e) {
     std::cerr << "recoil: error: " << e.what() << std::endl;
     return e.exit_code();

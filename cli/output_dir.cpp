@@ -14,4 +14,22 @@ void ensure_output_dir(const fs::path& dir) {
     throw output_error("cannot create output folder " + dir.string() + (ec ? ": " + ec.message() : ""));
 }
 
+int remove_stale_temporaries(const fs::path& dir) {
+  const auto is_temporary = [](const std::string& name) {
+    return (name.rfind("frame_", 0) == 0 && name.find(".png.tmp-") != std::string::npos) ||
+           name.rfind("scene.json.tmp-", 0) == 0 || name.rfind("run.json.tmp-", 0) == 0;
+  };
+  std::error_code ec;
+  int removed = 0;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    if (!is_temporary(it->path().filename().string())) continue;
+    std::error_code remove_ec;
+    fs::remove(it->path(), remove_ec);
+    if (remove_ec) throw output_error("cannot remove stale " + it->path().string() + ": " + remove_ec.message());
+    ++removed;
+  }
+  if (ec) throw output_error("cannot list output folder " + dir.string() + ": " + ec.message());
+  return removed;
+}
+
 }  // namespace recoil::cli

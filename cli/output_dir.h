@@ -13,3 +13,12 @@ std::filesystem::path default_output_dir(const std::string& name);
 void ensure_output_dir(const std::filesystem::path& dir);
 
 }  // namespace recoil::cli
+
+namespace recoil::cli {
+
+// Deletes the temporaries a killed run leaves in `dir` (frame_N.png.tmp-*,
+// scene.json.tmp-*, run.json.tmp-*: core/atomic_write.h); returns how many.
+// Throws output_failed with the reason when one cannot be removed.
+int remove_stale_temporaries(const std::filesystem::path& dir);
+
+}  // namespace recoil::cli

@@ -68,7 +68,8 @@ void RunReport::finish(const sim::World& world, const RunResult& result, double 
               {"worst_kkt", result.quality.worst_kkt},
               {"max_penetration", result.quality.max_penetration},
               {"margin", result.quality.margin}}},
-            {"exit", {{"code", result.failed ? 3 : 0}, {"status", result.failed ? "sim_failed" : "ok"},
+            {"exit", {{"code", result.interrupted_by ? 128 + result.interrupted_by : result.failed ? 3 : 0},
+                      {"status", result.interrupted_by ? "interrupted" : result.failed ? "sim_failed" : "ok"},
                       {"message", result.message}}}};
 }
 

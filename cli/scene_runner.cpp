@@ -12,15 +12,18 @@
 #include "cli/frame_spec.h"
 #include "cli/file_io.h"
 #include "cli/frame_stats.h"
+#include "cli/interrupt.h"
 #include "cli/output_dir.h"
 #include "cli/progress.h"
 #include "cli/run_report.h"
 #include "cli/scene_view.h"
 #include "cli/video_encoder.h"
 #include "cli/work_limits.h"
+#include "core/atomic_write.h"
 #include "core/error.h"
 #include "render/frame_writer.h"
 #include "render/png.h"
+#include "render/png_probe.h"
 #include "render/renderer.h"
 #include "sim/world.h"
 
@@ -119,11 +122,13 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   }
 
   ensure_output_dir(job.output_dir);
+  remove_stale_temporaries(job.output_dir);
   write_text_atomically(job.output_dir / "scene.json", scene.resolved.dump(2) + "\n");
   const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
   if (stats_path.has_parent_path()) ensure_output_dir(stats_path.parent_path());
+  errno = 0;
   std::ofstream stats_out(stats_path, std::ios::binary | std::ios::trunc);
-  if (!stats_out) throw output_error("cannot write " + stats_path.string());
+  if (!stats_out) throw output_error("cannot write " + stats_path.string() + ": " + errno_message(errno));
 
   RunReport report(job, scene);
   auto build_start = Clock::now();
@@ -150,6 +155,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     if (!job.video.empty()) video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, fps);
   }
 
+  const InterruptScope interrupts;
   Progress progress(global, "run", static_cast<int>(selected.size()));
   RunResult result;
   for (const SceneBody& body : scene.bodies)
@@ -159,10 +165,10 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const long grace_steps = std::max(1L, static_cast<long>(std::ceil(kInversionGrace / dt)));
   render::Image image;
   double encoded_before = 0.0;
-  for (int k = 1; k <= last_frame && !result.failed; ++k) {
+  for (int k = 1; k <= last_frame && !result.failed && !pending_interrupt(); ++k) {
     FrameAccumulator acc;
     const long target = frame_step(k, fps, dt);
-    while (world->counters().steps < target) {
+    while (world->counters().steps < target && !pending_interrupt()) {
       const sim::StepReport r = world->step();
       acc.add(r);
       report.add_step(r);
@@ -180,14 +186,14 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       }
       if (result.failed) break;
     }
-    if (result.failed) break;
+    if (result.failed || pending_interrupt()) break;
     if (next >= selected.size() || selected[next] != k) continue;
     ++next;
     FrameTimes times;
     if (job.render) {
       const fs::path path = job.output_dir / frame_file_name(k, name_count);
-      std::error_code ec;
-      if (job.resume && fs::is_regular_file(path, ec)) {
+      // Only a whole frame of this size is kept; a cut or foreign file is drawn again.
+      if (job.resume && render::is_whole_png(path, settings.width, settings.height)) {
         ++result.frames_skipped;
         if (video) video->add(render::read_png(path));
       } else {
@@ -204,23 +210,29 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     }
     report.add_frame(times);
     stats_out << frame_stats_json(k, (k - 1) / fps, world->time(), acc, world->stats(), scene, times).dump() << "\n";
+    errno = 0;
     stats_out.flush();
-    if (!stats_out) throw output_error("cannot write " + stats_path.string());
+    if (!stats_out) throw output_error("cannot write " + stats_path.string() + ": " + errno_message(errno));
     progress.update(static_cast<int>(next));
   }
   progress.finish();
   if (writer) writer->finish();
-  if (video && !result.failed) video->finish();
+  // A signal while the last frames were written still stops the run: its exit code says so.
+  if (!result.failed && (result.interrupted_by = pending_interrupt()) != 0)
+    result.message = "interrupted by " + signal_name(result.interrupted_by) + " after " + std::to_string(next) +
+                     " of " + std::to_string(selected.size()) + " frames; run the same command with --resume to finish";
+  if (video && !result.failed && !result.interrupted_by) video->finish();
   report.timings.encode = writer ? writer->encode_ms() : 0.0;
   result.steps = world->counters().steps;
   result.quality = report.solve_quality(scene.world.contact.margin);
-  if (job.strict && !result.failed && result.quality.not_converged > 0) {
+  if (job.strict && !result.failed && !result.interrupted_by && result.quality.not_converged > 0) {
     result.failed = true;
     result.message = scene_error(Error(ErrorKind::sim_failed, "--strict: " + describe_warnings(result.quality)), scene)
                          .what();
   }
   report.finish(*world, result, ms_since(start));
   write_text_atomically(job.output_dir / "run.json", report.json().dump(2) + "\n");
+  if (result.interrupted_by) throw Interrupted(result.interrupted_by, result.message);
   if (result.failed) throw Error(ErrorKind::sim_failed, result.message);
   return result;
 }

@@ -36,7 +36,8 @@ struct RunResult {
   int frames_skipped = 0;   // --resume: already on disk
   long steps = 0;
   bool failed = false;
-  std::string message;      // what failed
+  int interrupted_by = 0;   // SIGINT or SIGTERM that stopped the run early; 0: none
+  std::string message;      // what failed, or what interrupted the run
   SolveQuality quality;
   std::vector<std::string> open_meshes;  // bodies from mesh files that are not watertight, scene order
 };
@@ -50,6 +51,8 @@ std::string describe_run_warnings(const RunResult& result);
 // (created). A failed simulation (or, with job.strict, an unconverged solve)
 // throws Error(sim_failed) after the frames so far are on disk and run.json
 // records it; the message names the scene file, the frame and the body.
+// SIGINT or SIGTERM stops the loop between steps and frames: the frames so far
+// are written whole, run.json says "interrupted", then Interrupted is thrown.
 RunResult run_scene(const RunJob& job, const GlobalOptions& global);
 
 // World errors name "bodies/i", "rigid_bodies/i" or "planes/i" by index in

@@ -5,6 +5,7 @@
 #include <thread>
 
 #include "cli/frame_names.h"
+#include "cli/interrupt.h"
 #include "cli/render_bridge.h"
 #include "render/frame_writer.h"
 
@@ -32,7 +33,7 @@ TurntableTimings render_turntable(sim::TriMesh mesh, const TurntableJob& job,
   render::FrameWriter writer(job.png, encoders, 2 * encoders + 1);
   TurntableTimings timings;
   render::Image image;
-  for (int frame = 0; frame < job.frames; ++frame) {
+  for (int frame = 0; frame < job.frames && !pending_interrupt(); ++frame) {
     const double azimuth = render::orbit_azimuth_deg(frame, job.frames);
     render::Camera camera = render::frame_bounding_sphere(placed.center(), radius, azimuth, job.elevation_deg, 40.0, aspect);
     if (job.camera_distance > 0)

@@ -30,6 +30,8 @@ struct TurntableTimings {
 // Stands `mesh` on the ground (y = 0) centred on the vertical axis, orbits the
 // camera once around it and writes frame_0001.png ... into job.output_dir
 // (which must exist). `on_frame(done)` is called after each frame is queued.
+// Inside an InterruptScope (cli/interrupt.h) a signal ends the loop early,
+// with every frame queued so far written whole.
 TurntableTimings render_turntable(sim::TriMesh mesh, const TurntableJob& job,
                                   const std::function<void(int)>& on_frame = {});
 

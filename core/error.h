@@ -25,6 +25,18 @@ class Error : public std::runtime_error {
   ErrorKind m_kind;
 };
 
+// SIGINT or SIGTERM stopped a command cleanly (outputs so far complete and
+// consistent); main() prints "recoil: <what>" and exits 128 + the signal, as
+// a shell expects of a program killed by it (130 for Ctrl-C, 143 for SIGTERM).
+class Interrupted : public std::runtime_error {
+ public:
+  Interrupted(int signal_number, const std::string& message) : std::runtime_error(message), m_signal(signal_number) {}
+  int exit_code() const { return 128 + m_signal; }
+
+ private:
+  int m_signal;
+};
+
 // Shorthands for the common kinds.
 inline Error bad_input(const std::string& message) { return Error(ErrorKind::bad_input, message); }
 inline Error output_error(const std::string& message) { return Error(ErrorKind::output_failed, message); }

@@ -6,8 +6,8 @@
 #include <cstring>
 #include <fstream>
 #include <memory>
-#include <random>
 
+#include "core/atomic_write.h"
 #include "core/error.h"
 
 namespace recoil::render {
@@ -74,26 +74,7 @@ std::vector<std::uint8_t> encode_png(const Image& image, const PngOptions& optio
 
 void write_png(const fs::path& path, const Image& image, const PngOptions& options) {
   const std::vector<std::uint8_t> bytes = encode_png(image, options);
-  // A unique temporary name beside the target, so rename() is atomic and two
-  // writers of the same frame never share a temporary file.
-  static thread_local std::mt19937_64 rng{std::random_device{}()};
-  const fs::path tmp = path.string() + ".tmp-" + std::to_string(rng() % 1000000000ULL);
-  {
-    std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-    if (out) out.write(reinterpret_cast<const char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-    out.close();
-    if (!out) {
-      std::error_code ignored;
-      fs::remove(tmp, ignored);
-      throw output_error("cannot write " + path.string() + ": " + std::strerror(errno));
-    }
-  }
-  std::error_code ec;
-  fs::rename(tmp, path, ec);
-  if (ec) {
-    fs::remove(tmp, ec);
-    throw output_error("cannot write " + path.string() + ": " + ec.message());
-  }
+  replace_file(path, bytes.data(), bytes.size());
 }
 
 namespace {
@@ -145,8 +126,9 @@ bool decode_raw(ReadSource* source, Image* image, PngError* error, std::vector<p
 }  // namespace
 
 Image read_png(const fs::path& path) {
+  errno = 0;
   std::ifstream in(path, std::ios::binary);
-  if (!in) throw bad_input(path.string() + ": cannot open: " + std::strerror(errno));
+  if (!in) throw bad_input(path.string() + ": cannot open: " + errno_message(errno));
   const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0)
     throw bad_input(path.string() + ": not a PNG file");

@@ -14,9 +14,9 @@ struct PngOptions {
 // Encodes `image` as 8-bit RGBA PNG into memory.
 std::vector<std::uint8_t> encode_png(const Image& image, const PngOptions& options = {});
 
-// Writes atomically: encodes to `path`.tmp-XXXX in the same folder, then
-// renames, so a reader never sees a half-written frame. Throws
-// recoil::Error(output_failed) naming the path when the disk refuses.
+// Writes atomically and durably (core/atomic_write.h): a reader never sees a
+// half-written frame. Throws recoil::Error(output_failed) naming the path and
+// the system's reason when the disk refuses.
 void write_png(const std::filesystem::path& path, const Image& image, const PngOptions& options = {});
 
 // Reads any PNG (grey, palette, 16-bit, with or without alpha) as RGBA8.

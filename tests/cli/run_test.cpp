@@ -151,13 +151,18 @@ TEST(RunCommand, ResumeSkipsFramesAlreadyOnDisk) {
   const std::string command = "run " + shell_quote(source_path("assets/scenes/validation/rest.json")) +
                               " --frames 1-3 --resolution 32x32 --msaa 0 -o " + shell_quote(dir);
   ASSERT_EQ(run_recoil(command).exit_code, 0);
-  // A marker in frame 1 survives a resume; the missing frame 2 is rendered again.
+  // A whole PNG of the frame size in frame 1 (a marker) survives a resume;
+  // the missing frame 2 is rendered again.
   const std::string frame2 = file_bytes(dir / "frame_0002.png");
-  { std::ofstream(dir / "frame_0001.png", std::ios::binary) << "kept"; }
+  render::Image marker;
+  marker.width = marker.height = 32;
+  marker.rgba.assign(32 * 32 * 4, 200);
+  render::write_png(dir / "frame_0001.png", marker);
+  const std::string kept = file_bytes(dir / "frame_0001.png");
   fs::remove(dir / "frame_0002.png");
   const CommandResult r = run_recoil(command + " --resume");
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_EQ(file_bytes(dir / "frame_0001.png"), "kept");
+  EXPECT_EQ(file_bytes(dir / "frame_0001.png"), kept);
   EXPECT_EQ(file_bytes(dir / "frame_0002.png"), frame2);
   const json run = json::parse(file_bytes(dir / "run.json"));
   EXPECT_EQ(run["frames"]["written"], 1);

@@ -1,0 +1,25 @@
+#pragma once
+// Ctrl-C (SIGINT) and SIGTERM during a frame loop: the handler only records
+// the signal (async-signal-safe), and the loop polls pending_interrupt()
+// between steps and frames, so it can stop with whole frames and run.json on
+// disk. A second signal before the loop stops exits at once.
+#include <string>
+
+namespace recoil::cli {
+
+// Installs the handlers for its lifetime and restores the previous ones after.
+class InterruptScope {
+ public:
+  InterruptScope();
+  ~InterruptScope();
+  InterruptScope(const InterruptScope&) = delete;
+  InterruptScope& operator=(const InterruptScope&) = delete;
+};
+
+// The signal received inside the current InterruptScope, or 0.
+int pending_interrupt();
+
+// "SIGINT", "SIGTERM" (or "signal N").
+std::string signal_name(int signal_number);
+
+}  // namespace recoil::cli
