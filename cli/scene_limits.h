@@ -40,7 +40,8 @@ inline constexpr Range kTurnsRange{-1e4, 1e4};              // orbit turns over 
 inline constexpr long kMaxSteps = 100'000'000;   // duration / dt: days of work on the smallest scene
 inline constexpr int kMaxFrames = 1'000'000;     // duration * fps + 1
 inline constexpr int kMaxIterations = 1'000'000; // the solver's cap per step
-inline constexpr int kMaxBodies = 100'000;     // far past what the contact solver settles in useful time
+inline constexpr int kMaxBodies = 10'000;      // ten times drop's largest pile; each body's mesh is parsed up front
+inline constexpr unsigned long kMaxSceneBytes = 32ul << 20;  // a scene file's size; kMaxBodies bodies take ~2 MiB
 inline constexpr int kMaxNameBytes = 128;        // a scene or body name (a folder name, well under NAME_MAX)
 
 // Why `name` cannot be a scene or body name ("" when it can): it must be a

@@ -156,6 +156,12 @@ SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, c
 }
 
 SceneDesc load_scene(const fs::path& file) {
+  std::error_code ec;
+  if (!fs::is_regular_file(file, ec)) throw bad_input(file.string() + ": not a regular file (a scene is a .json file)");
+  // Its parsed form takes about ten times the text: the size is bounded first.
+  if (const auto size = fs::file_size(file, ec); !ec && size > kMaxSceneBytes)
+    throw bad_input(file.string() + ": the scene file is " + std::to_string(size >> 20) + " MiB; at most " +
+                    std::to_string(kMaxSceneBytes >> 20) + " MiB");
   std::ifstream in(file, std::ios::binary);
   if (!in) throw bad_input(file.string() + ": cannot read the scene file");
   std::ostringstream text;

@@ -72,10 +72,27 @@ Error scene_error(const Error& e, const SceneDesc& scene) {
 
 namespace {
 
-std::string describe_failure(const sim::StepReport& r, int frame, const std::string& what) {
+std::string describe_failure(const sim::StepReport& r, int frame, const std::string& what, const SceneDesc& scene) {
   std::ostringstream s;
-  s << "simulation failed at frame " << frame << " (step " << r.step << ", t = " << r.time << " s): body '" << r.body
+  s << (scene.file.empty() ? scene.name : scene.file.string()) << ": simulation failed at frame " << frame << " (step " << r.step << ", t = " << r.time << " s): body '" << r.body
     << "': " << what;
+  return s.str();
+}
+
+}  // namespace
+
+namespace {
+
+std::string describe_overlap(const sim::InitialOverlap& overlap, const SceneDesc& scene) {
+  auto where = [&](const std::string& name) {
+    const SceneBody* body = scene.find(name);
+    return "'" + name + "'" + (body ? " (" + body->pointer + ")" : "");
+  };
+  std::ostringstream s;
+  s.precision(3);
+  s << (scene.file.empty() ? scene.name : scene.file.string()) << ": body " << where(overlap.body)
+    << " starts " << overlap.depth * 1e3 << " mm inside " << where(overlap.inside) << ", more than the "
+    << scene.world.contact.margin * 1e3 << " mm contact margin; move them apart";
   return s.str();
 }
 
@@ -121,15 +138,6 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     if (!job.render) throw bad_input("--video needs rendered frames; drop --no-render");
   }
 
-  ensure_output_dir(job.output_dir);
-  remove_stale_temporaries(job.output_dir);
-  write_text_atomically(job.output_dir / "scene.json", scene.resolved.dump(2) + "\n");
-  const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
-  if (stats_path.has_parent_path()) ensure_output_dir(stats_path.parent_path());
-  errno = 0;
-  std::ofstream stats_out(stats_path, std::ios::binary | std::ios::trunc);
-  if (!stats_out) throw output_error("cannot write " + stats_path.string() + ": " + errno_message(errno));
-
   RunReport report(job, scene);
   auto build_start = Clock::now();
   std::unique_ptr<sim::World> world;
@@ -139,6 +147,8 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     throw scene_error(e, scene);
   }
   report.timings.build = ms_since(build_start);
+  if (const std::optional<sim::InitialOverlap> overlap = world->initial_overlap())
+    throw bad_input(describe_overlap(*overlap, scene));
 
   render::RenderSettings settings;
   std::unique_ptr<render::Renderer> renderer;
@@ -147,13 +157,29 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   std::unique_ptr<SceneView> view;
   if (job.render) {
     settings = to_render_settings(scene.render);
-    renderer = std::make_unique<render::Renderer>(settings);
+    try {
+      renderer = std::make_unique<render::Renderer>(settings);
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::bad_input) throw;
+      throw Error(e.kind(), (scene.file.empty() ? scene.name : scene.file.string()) + ": /render/resolution: " + e.what());
+    }
     // One encoder per spare core; llvmpipe uses the others while drawing.
     const int encoders = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), encoders, 2 * encoders + 1);
     view = std::make_unique<SceneView>(scene, world->surfaces(), static_cast<double>(settings.width) / settings.height);
-    if (!job.video.empty()) video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, fps);
   }
+
+  // Outputs only once the world and the renderer exist: a refused scene writes nothing.
+  ensure_output_dir(job.output_dir);
+  remove_stale_temporaries(job.output_dir);
+  write_text_atomically(job.output_dir / "scene.json", scene.resolved.dump(2) + "\n");
+  const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
+  if (stats_path.has_parent_path()) ensure_output_dir(stats_path.parent_path());
+  errno = 0;
+  std::ofstream stats_out(stats_path, std::ios::binary | std::ios::trunc);
+  if (!stats_out) throw output_error("cannot write " + stats_path.string() + ": " + errno_message(errno));
+  if (job.render && !job.video.empty())
+    video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, fps);
 
   const InterruptScope interrupts;
   Progress progress(global, "run", static_cast<int>(selected.size()));
@@ -177,12 +203,12 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup) {
         result.failed = true;
         result.message = describe_failure(r, k, r.status == sim::StepStatus::nan ? "NaN in positions or velocities"
-                                                                                  : "energy blew up (diverged)");
+                                                                                  : "energy blew up (diverged)", scene);
       } else if (r.status == sim::StepStatus::inverted && inverted_steps > grace_steps) {
         result.failed = true;
         std::ostringstream what;
         what << r.inverted_tets << " inverted elements for longer than " << kInversionGrace << " s (beyond recovery)";
-        result.message = describe_failure(r, k, what.str());
+        result.message = describe_failure(r, k, what.str(), scene);
       }
       if (result.failed) break;
     }

@@ -20,6 +20,7 @@
 #include <Eigen/Core>
 #include <array>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,14 @@ struct BodyStats {
   int num_tets = 0;
 };
 
+// A body that starts inside another body (or behind a plane) by `depth` m,
+// more than the contact margin.
+struct InitialOverlap {
+  std::string body;    // the body with a vertex inside
+  std::string inside;  // the body or plane it is inside
+  double depth = 0.0;  // m
+};
+
 class World {
  public:
   // Throws bad_input (naming "bodies/i/...") for invalid descriptions.
@@ -114,6 +123,8 @@ class World {
   // Dynamic bodies (deformable, then rigid), in description order.
   std::vector<BodyStats> stats() const;
   const WorldCounters& counters() const { return m_counters; }
+  // The deepest such overlap in the current state, if any (sim/collision/initial_overlap.h).
+  std::optional<InitialOverlap> initial_overlap() const;
 
   double time() const { return m_time; }
   double dt() const { return m_dt; }
@@ -141,6 +152,7 @@ class World {
   // then the contact solve (m_dv in: contact-free, out: with contacts).
   void collide_and_solve(StepReport& report);
   std::vector<ContactSurface> contact_surfaces() const;
+  std::vector<ContactPlane> contact_planes() const;
   void integrate();
   void check_health(StepReport& report);
   // Kinetic + elastic + gravitational energy of dynamic body i (deformable

@@ -4,6 +4,7 @@
 
 #include "core/check.h"
 #include "sim/collision/collision_detector.h"
+#include "sim/collision/initial_overlap.h"
 #include "sim/fem/assembly.h"
 #include "sim/solver/contact_rows_ops.h"
 #include "sim/world.h"
@@ -116,14 +117,7 @@ std::vector<ContactSurface> World::contact_surfaces() const {
   return out;
 }
 
-void World::collide_and_solve(StepReport& report) {
-  // A state that is already broken is reported by the health stage; the
-  // collision search needs finite positions.
-  if (!m_x.allFinite() || !m_v.allFinite() || !m_dv.allFinite()) {
-    m_memory.clear();
-    return;
-  }
-  auto t = Clock::now();
+std::vector<ContactPlane> World::contact_planes() const {
   std::vector<ContactPlane> planes;
   for (size_t i = 0; i < m_planes.size(); ++i) {
     ContactPlane p;
@@ -134,7 +128,35 @@ void World::collide_and_solve(StepReport& report) {
     p.mu_kinetic = m_planes[i].friction.kinetic_coefficient;
     planes.push_back(p);
   }
-  ContactModel model(contact_surfaces(), std::move(planes), DofState{&m_x, &m_v, m_dt}, m_contact.margin,
+  return planes;
+}
+
+std::optional<InitialOverlap> World::initial_overlap() const {
+  const ContactModel model(contact_surfaces(), contact_planes(), DofState{&m_x, &m_v, m_dt}, m_contact.margin,
+                           m_detector.get());
+  const std::optional<SurfaceOverlap> found = deepest_overlap(
+      model.collision_surfaces(Eigen::VectorXd::Zero(m_v.size())), model.collision_planes(), m_contact.margin);
+  if (!found) return std::nullopt;
+  // Surfaces are the deformable bodies, then the rigid ones (contact_surfaces).
+  auto surface_name = [&](int s) {
+    const size_t i = static_cast<size_t>(s);
+    return i < m_bodies.size() ? m_bodies[i].name : m_rigid[i - m_bodies.size()].name;
+  };
+  return InitialOverlap{surface_name(found->surface),
+                        found->inside_plane >= 0 ? m_planes[static_cast<size_t>(found->inside_plane)].name
+                                                 : surface_name(found->inside_surface),
+                        found->depth};
+}
+
+void World::collide_and_solve(StepReport& report) {
+  // A state that is already broken is reported by the health stage; the
+  // collision search needs finite positions.
+  if (!m_x.allFinite() || !m_v.allFinite() || !m_dv.allFinite()) {
+    m_memory.clear();
+    return;
+  }
+  auto t = Clock::now();
+  ContactModel model(contact_surfaces(), contact_planes(), DofState{&m_x, &m_v, m_dt}, m_contact.margin,
                      m_detector.get());
   const std::vector<ContactCandidate> candidates =
       m_detector->detect(model.collision_surfaces(m_dv), model.collision_planes());

@@ -261,8 +261,8 @@ for special in ("fifo.ele", "zero.ele"):
     s["bodies"][1] = {"name": "t", "type": "deformable", "mesh": special}
     add(f"tet-{os.path.splitext(special)[0]}.json", json.dumps(s), "/bodies/1/mesh")
 
-# Many bodies: a million are refused by count, and 100 000 whose last is
-# invalid are refused after a linear-time parse.
+# Many bodies: a million are refused by the file's size, 10 001 by their
+# count, and 10 000 whose last is invalid after a linear-time parse.
 def many_bodies(name, count, last):
     with open(os.path.join(out_dir, name), "w") as f:
         f.write('{"recoil": 1, "name": "many", "bodies": [{"name": "ground", "type": "plane"}')
@@ -274,10 +274,14 @@ def many_bodies(name, count, last):
 
 many_bodies("million-bodies.json", 1000000, '{"name": "last", "type": "rigid", "primitive": {"box": [1, 1, 1]}}')
 cases.append({"name": "million-bodies.json", "args": "run {dir}/million-bodies.json --no-render", "exit": 2,
-              "expect": ["million-bodies.json", "/bodies", "at most 100000"]})
-many_bodies("last-body-invalid.json", 100000, '{"name": "last", "type": "rigid", "primitive": {"sphere": -1}}')
+              "expect": ["million-bodies.json", "MiB; at most 32 MiB"]})
+with open(os.path.join(out_dir, "too-many-bodies.json"), "w") as f:
+    f.write('{"recoil": 1, "bodies": [' + ",".join(['{"type": "plane"}'] * 10001) + "]}")
+cases.append({"name": "too-many-bodies.json", "args": "run {dir}/too-many-bodies.json --no-render", "exit": 2,
+              "expect": ["too-many-bodies.json", "/bodies", "at most 10000"]})
+many_bodies("last-body-invalid.json", 9999, '{"name": "last", "type": "rigid", "primitive": {"sphere": -1}}')
 cases.append({"name": "last-body-invalid.json", "args": "run {dir}/last-body-invalid.json --no-render", "exit": 2,
-              "expect": ["last-body-invalid.json", "/bodies/100000/primitive/sphere"]})
+              "expect": ["last-body-invalid.json", "/bodies/9999/primitive/sphere"]})
 
 # Runs that go wrong after they start: exit 3 naming the scene file.
 s = base_scene()
