@@ -4,9 +4,9 @@
 #include "sim/geometry/mesh_header.h"
 
 #include <algorithm>
+#include <cctype>
 #include <charconv>
 #include <sstream>
-#include <string_view>
 #include <vector>
 
 #include "core/error.h"
@@ -19,6 +19,12 @@ bool parse_count(const std::string& token, std::uint64_t& value) {
   const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   if (ec == std::errc::result_out_of_range) value = UINT64_MAX;
   return ptr != token.data();
+}
+
+// assimp matches PLY keywords regardless of case ("Ply", "END_HEADER").
+std::string lower_case(std::string word) {
+  for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return word;
 }
 
 // Bytes of one binary PLY value of `type` (unknown names count as 1).
@@ -53,16 +59,20 @@ void check_ply(const std::string& head, std::uintmax_t file_size, const std::str
   while (!ended && std::getline(lines, line)) {
     std::istringstream words(line);
     std::string keyword, a, b;
-    words >> keyword >> a >> b;
+    words >> keyword >> a >> b;  // b: a list's count type
+    keyword = lower_case(keyword);
     ended = keyword == "end_header";
     if (keyword == "format") {
-      ascii = a == "ascii";
+      ascii = lower_case(a) == "ascii";
     } else if (keyword == "element") {
+      // The largest number on the line: assimp finds the count even where the name is missing.
       PlyElement e{a, 0, 0};
-      if (!parse_count(b, e.count)) e.count = 0;  // assimp reports the broken count
+      std::istringstream rest(line);
+      for (std::string word; rest >> word;)
+        if (std::uint64_t n = 0; parse_count(word, n)) e.count = std::max(e.count, n);
       elements.push_back(e);
     } else if (keyword == "property" && !elements.empty()) {
-      elements.back().min_bytes += ascii ? 2 : ply_type_bytes(a == "list" ? b : a);  // a list may be empty
+      elements.back().min_bytes += ascii ? 2 : ply_type_bytes(lower_case(lower_case(a) == "list" ? b : a));  // a list may be empty
     }
   }
   // Without one, assimp 5.2 searches for it forever.
@@ -84,7 +94,14 @@ void check_off(const std::string& head, std::uintmax_t file_size, const std::str
     std::istringstream in(line.substr(0, line.find('#')));
     for (std::string w; in >> w;) words.push_back(w);
   }
-  if (words.empty()) return;
+  const size_t magic = words.empty() ? std::string::npos : words[0].find("OFF");
+  if (magic == std::string::npos) return;
+  // assimp reads a count that follows "OFF" without a space ("OFF8").
+  const size_t tail = magic + 3;
+  if (tail < words[0].size()) {
+    words.insert(words.begin() + 1, words[0].substr(tail));
+    words[0].resize(tail);
+  }
   // "nOFF" gives a dimension before the counts; binary OFF files store them as integers.
   const size_t first = words[0].find("nOFF") != std::string::npos ? 2 : 1;
   if (words.size() > first && words[first] == "BINARY") return;
@@ -99,13 +116,15 @@ void check_off(const std::string& head, std::uintmax_t file_size, const std::str
 }  // namespace
 
 void check_declared_mesh_counts(const std::string& head, std::uintmax_t file_size, const std::string& name) {
-  const std::string_view start(head.data(), std::min<size_t>(head.size(), 16));
-  if (start.substr(0, 3) == "ply") {
-    check_ply(head, file_size, name);
+  // assimp finds the PLY magic after leading blank lines too.
+  const size_t text = std::min(head.find_first_not_of(" \t\r\n"), head.size());
+  if (lower_case(head.substr(text, 3)) == "ply") {
+    check_ply(head.substr(text), file_size, name);
     return;
   }
+  const std::string start = head.substr(0, 16);
   const size_t off = start.find("OFF");
-  if (off != std::string_view::npos && start.substr(0, off).find_first_not_of("STCN4n") == std::string_view::npos)
+  if (off != std::string::npos && start.substr(0, off).find_first_not_of("STCN4n") == std::string::npos)
     check_off(head, file_size, name);
 }
 
