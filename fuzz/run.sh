@@ -22,13 +22,15 @@ for target in "$@"; do
   asan=${ASAN_OPTIONS:-}
   # assimp leaks a few KiB on some broken files (in its STL reader); not recoil's to fix.
   [[ $name == mesh_import ]] && asan=detect_leaks=0${asan:+:$asan}
+  marker=$(mktemp)  # findings of earlier runs stay in $findings but are not counted again
   start=$(date +%s)
   ASAN_OPTIONS=$asan "$build/fuzz/$target" "${flags[@]}" -dict="$here/$name.dict" -artifact_prefix="$findings/" \
     "$corpus" "$here/corpus/$name" >"$log" 2>&1
   rc=$?
   elapsed=$(( $(date +%s) - start ))
   execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*$')
-  found=$(find "$findings" -type f | wc -l)
+  found=$(find "$findings" -type f -newer "$marker" | wc -l)
+  rm -f "$marker"
   if [[ $rc -ne 0 || $found -ne 0 ]]; then
     failed=1
     echo "fuzz: $target failed (exit $rc); log: $log; findings in $findings:" >&2

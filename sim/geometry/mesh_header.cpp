@@ -21,7 +21,7 @@ bool parse_count(const std::string& token, std::uint64_t& value) {
   return ptr != token.data();
 }
 
-// assimp matches PLY keywords regardless of case ("Ply", "END_HEADER").
+// assimp matches the PLY magic regardless of case ("Ply").
 std::string lower_case(std::string word) {
   for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
   return word;
@@ -60,10 +60,10 @@ void check_ply(const std::string& head, std::uintmax_t file_size, const std::str
     std::istringstream words(line);
     std::string keyword, a, b;
     words >> keyword >> a >> b;  // b: a list's count type
-    keyword = lower_case(keyword);
-    ended = keyword == "end_header";
+    // Only an exact "end_header" at the start of a line: assimp 5.2 hangs on near misses ("end_hEader").
+    ended = keyword == "end_header" && line.rfind("end_header", 0) == 0;
     if (keyword == "format") {
-      ascii = lower_case(a) == "ascii";
+      ascii = a == "ascii";
     } else if (keyword == "element") {
       // The largest number on the line: assimp finds the count even where the name is missing.
       PlyElement e{a, 0, 0};
@@ -72,7 +72,7 @@ void check_ply(const std::string& head, std::uintmax_t file_size, const std::str
         if (std::uint64_t n = 0; parse_count(word, n)) e.count = std::max(e.count, n);
       elements.push_back(e);
     } else if (keyword == "property" && !elements.empty()) {
-      elements.back().min_bytes += ascii ? 2 : ply_type_bytes(lower_case(lower_case(a) == "list" ? b : a));  // a list may be empty
+      elements.back().min_bytes += ascii ? 2 : ply_type_bytes(a == "list" ? b : a);  // a list may be empty
     }
   }
   // Without one, assimp 5.2 searches for it forever.
