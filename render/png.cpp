@@ -9,6 +9,7 @@
 
 #include "core/atomic_write.h"
 #include "core/error.h"
+#include "core/regular_file.h"
 
 namespace recoil::render {
 namespace fs = std::filesystem;
@@ -80,15 +81,38 @@ void write_png(const fs::path& path, const Image& image, const PngOptions& optio
 namespace {
 
 struct ReadSource {
-  const std::vector<std::uint8_t>* bytes;
+  const std::string* bytes;
   size_t offset = 0;
 };
 
 void read_bytes(png_structp png, png_bytep data, png_size_t length) {
   auto* source = static_cast<ReadSource*>(png_get_io_ptr(png));
-  if (source->offset + length > source->bytes->size()) png_error(png, "file is truncated");
+  if (length > source->bytes->size() - source->offset) png_error(png, "file is truncated");
   std::memcpy(data, source->bytes->data() + source->offset, length);
   source->offset += length;
+}
+
+// The largest image read: the largest render (16384 x 16384 pixels, 1 GiB as RGBA8).
+constexpr double kMaxPixels = 16384.0 * 16384.0;
+// zlib's deflate packs at most about 1032 bytes into one, so a PNG's filtered
+// rows cannot be more than this many times its file size.
+constexpr double kMaxDeflateRatio = 1032.0;
+
+// Refuses (through png_error) a header whose pixels the file cannot hold, before
+// the pixels are allocated; the message is formatted without heap memory since png_error longjmps.
+void check_declared_size(png_structp png, png_infop info, const ReadSource& source) {
+  const double width = png_get_image_width(png, info), height = png_get_image_height(png, info);
+  const double filtered_bytes = height * (static_cast<double>(png_get_rowbytes(png, info)) + 1.0);
+  char message[160];
+  if (width * height > kMaxPixels) {
+    std::snprintf(message, sizeof(message), "%.0f x %.0f pixels is more than the 16384 x 16384 read", width, height);
+    png_error(png, message);
+  }
+  if (filtered_bytes > kMaxDeflateRatio * static_cast<double>(source.bytes->size())) {
+    std::snprintf(message, sizeof(message), "declares %.0f x %.0f pixels, more than its %zu bytes can hold", width,
+                  height, source.bytes->size());
+    png_error(png, message);
+  }
 }
 
 // `rows` belongs to the caller so that a longjmp out of libpng leaks nothing.
@@ -102,6 +126,7 @@ bool decode_raw(ReadSource* source, Image* image, PngError* error, std::vector<p
   }
   png_set_read_fn(png, source, read_bytes);
   png_read_info(png, info);
+  check_declared_size(png, info, *source);
   const png_uint_32 width = png_get_image_width(png, info);
   const png_uint_32 height = png_get_image_height(png, info);
   // Normalise every colour type and depth to 8-bit RGBA.
@@ -126,11 +151,8 @@ bool decode_raw(ReadSource* source, Image* image, PngError* error, std::vector<p
 }  // namespace
 
 Image read_png(const fs::path& path) {
-  errno = 0;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw bad_input(path.string() + ": cannot open: " + errno_message(errno));
-  const std::vector<std::uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (bytes.size() < 8 || png_sig_cmp(bytes.data(), 0, 8) != 0)
+  const std::string bytes = read_regular_file(path, "PNG file");
+  if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0)
     throw bad_input(path.string() + ": not a PNG file");
   ReadSource source{&bytes};
   Image image;

@@ -19,6 +19,8 @@ packages=(
   libgtest-dev           # tests
   libbenchmark-dev       # make bench
   assimp-testmodels      # a corpus of real, valid and broken mesh files for the import tests
+  clang                  # make fuzz: the fuzz targets are built with clang ...
+  libclang-rt-14-dev     # ... and linked with its libFuzzer and sanitizer runtimes
 )
 if [[ "${1:-}" == "--video" ]]; then packages+=(ffmpeg); fi
 

@@ -8,11 +8,14 @@
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <array>
+#include <fstream>
 #include <map>
-#include <vector>
 #include <system_error>
+#include <vector>
 
 #include "core/error.h"
+#include "core/regular_file.h"
+#include "sim/geometry/mesh_header.h"
 
 namespace recoil::sim {
 namespace fs = std::filesystem;
@@ -100,9 +103,17 @@ TriMesh weld_and_clean(const TriMesh& mesh) {
 }
 
 TriMesh import_surface(const fs::path& path) {
-  std::error_code ec;
-  if (!fs::exists(path, ec)) throw bad_input(path.string() + ": no such file");
-  if (fs::is_directory(path, ec)) throw bad_input(path.string() + ": is a folder, not a mesh file");
+  require_regular_file(path, "mesh file");
+  {
+    // Headers fit in the first 64 KiB; their counts are checked before assimp allocates for them.
+    std::string head(64 * 1024, '\0');
+    std::ifstream in(path, std::ios::binary);
+    in.read(head.data(), static_cast<std::streamsize>(head.size()));
+    head.resize(static_cast<size_t>(in.gcount()));
+    std::error_code ec;
+    const std::uintmax_t size = fs::file_size(path, ec);
+    if (!ec) check_declared_mesh_counts(head, size, path.string());
+  }
   Assimp::Importer importer;
   // Only assimp's validation runs: its other post-processing steps assert
   // (and abort) on some malformed files, so triangulation, dropping points and

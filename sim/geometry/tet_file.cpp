@@ -9,12 +9,11 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <fstream>
-#include <sstream>
 #include <unordered_map>
 #include <vector>
 
 #include "core/error.h"
+#include "core/regular_file.h"
 #include "sim/geometry/tet_file_lines.h"
 
 namespace recoil::sim {
@@ -28,13 +27,13 @@ constexpr int kGmshTet4 = 4;
 constexpr int kGmshTet10 = 11;  // quadratic tet: its first four nodes are the corners
 bool is_gmsh_tet(long long type) { return type == kGmshTet4 || type == kGmshTet10; }
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw bad_input(path.string() + ": cannot open tet mesh file");
-  std::ostringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
+// The fewest bytes (newline included) of what a header counts, so that a
+// count the file cannot hold fails before anything is reserved for it.
+constexpr long long kNodeLineBytes = 8;      // "1 0 0 0\n"; Gmsh 4.1: "1\n" + "0 0 0\n"
+constexpr long long kElementLineBytes = 6;   // Gmsh 2: "1 1 0\n" (tag type ntags)
+constexpr long long kBlockHeaderBytes = 8;   // Gmsh 4: "0 1 0 1\n"
+constexpr long long kTagLineBytes = 2;       // Gmsh 4 element: "1\n"
+constexpr long long kTetLineBytes = 10;      // TetGen: "1 1 2 3 4\n"
 
 // Collects nodes by tag and tets by node tags, then resolves and validates.
 struct Builder {
@@ -98,8 +97,8 @@ void expect_end(LineReader& r, const char* end_tag) {
   if (t[0] != end_tag) r.fail(std::string("expected ") + end_tag);
 }
 
-void gmsh_nodes_v2(LineReader& r, Builder& b, long long limit) {
-  const long long n = r.to_count(r.expect("node count")[0], "node count", limit);
+void gmsh_nodes_v2(LineReader& r, Builder& b) {
+  const long long n = r.declared_count(r.expect("node count")[0], "nodes", kNodeLineBytes);
   for (long long i = 0; i < n; ++i) {
     const Tokens t = r.expect("a node line");
     if (t.size() < 4) r.fail("a node line needs: tag x y z");
@@ -107,8 +106,8 @@ void gmsh_nodes_v2(LineReader& r, Builder& b, long long limit) {
   }
 }
 
-void gmsh_elements_v2(LineReader& r, Builder& b, long long limit) {
-  const long long m = r.to_count(r.expect("element count")[0], "element count", limit);
+void gmsh_elements_v2(LineReader& r, Builder& b) {
+  const long long m = r.declared_count(r.expect("element count")[0], "elements", kElementLineBytes);
   for (long long i = 0; i < m; ++i) {
     const Tokens t = r.expect("an element line");
     if (t.size() < 3) r.fail("an element line needs: tag type ntags ...");
@@ -118,14 +117,15 @@ void gmsh_elements_v2(LineReader& r, Builder& b, long long limit) {
   }
 }
 
-void gmsh_nodes_v4(LineReader& r, Builder& b, long long limit, bool v41) {
+void gmsh_nodes_v4(LineReader& r, Builder& b, bool v41) {
   const Tokens head = r.expect("node section header");
-  const long long blocks = r.to_count(head[0], "node block count", limit);
+  const long long blocks = r.declared_count(head[0], "node blocks", kBlockHeaderBytes);
+  if (head.size() > 1) r.declared_count(head[1], "nodes", kNodeLineBytes);  // the total, over all blocks
   for (long long bi = 0; bi < blocks; ++bi) {
     const Tokens bh = r.expect("a node block header");
     if (bh.size() < 4) r.fail("a node block header needs 4 numbers");
     const bool parametric = r.to_int(bh[2], "parametric flag") != 0;
-    const long long k = r.to_count(bh[3], "nodes in block", limit);
+    const long long k = r.declared_count(bh[3], "nodes in a block", kNodeLineBytes);
     if (v41) {
       std::vector<long long> tags;
       for (long long i = 0; i < k; ++i) tags.push_back(r.to_int(r.expect("a node tag")[0], "node tag"));
@@ -143,14 +143,15 @@ void gmsh_nodes_v4(LineReader& r, Builder& b, long long limit, bool v41) {
   }
 }
 
-void gmsh_elements_v4(LineReader& r, Builder& b, long long limit) {
+void gmsh_elements_v4(LineReader& r, Builder& b) {
   const Tokens head = r.expect("element section header");
-  const long long blocks = r.to_count(head[0], "element block count", limit);
+  const long long blocks = r.declared_count(head[0], "element blocks", kBlockHeaderBytes);
+  if (head.size() > 1) r.declared_count(head[1], "elements", kTagLineBytes);
   for (long long bi = 0; bi < blocks; ++bi) {
     const Tokens bh = r.expect("an element block header");
     if (bh.size() < 4) r.fail("an element block header needs 4 numbers");
     const long long type = r.to_int(bh[2], "element type");
-    const long long k = r.to_count(bh[3], "elements in block", limit);
+    const long long k = r.declared_count(bh[3], "elements in a block", kTagLineBytes);
     for (long long i = 0; i < k; ++i) {
       const Tokens t = r.expect("an element line");
       if (is_gmsh_tet(type)) b.add_tet(r, t, 1);
@@ -162,7 +163,6 @@ void gmsh_elements_v4(LineReader& r, Builder& b, long long limit) {
 
 TetMesh parse_gmsh(const std::string& text, const std::string& name) {
   LineReader r(text, name, 0);
-  const long long limit = static_cast<long long>(text.size());
   Builder b;
   int major = 0;
   bool v41 = false;
@@ -174,19 +174,20 @@ TetMesh parse_gmsh(const std::string& text, const std::string& name) {
       if (f.size() < 2) r.fail("format line needs: version file-type data-size");
       const double version = r.to_double(f[0], "version");
       if (r.to_int(f[1], "file type") != 0) r.fail("binary .msh files are not supported; save as ASCII");
-      major = static_cast<int>(version);
+      // Checked before the cast: a double beyond int's range has no int value.
+      major = version >= 2.0 && version < 5.0 ? static_cast<int>(version) : -1;
       v41 = version >= 4.05;
       if (major != 2 && major != 4) r.fail("unsupported Gmsh version " + std::string(f[0]) + " (use 2.2 or 4.1)");
       expect_end(r, "$EndMeshFormat");
     } else if (tag == "$Nodes" || tag == "$Elements") {
       if (major == 0) r.fail(std::string(tag) + " before $MeshFormat");
       if (tag == "$Nodes") {
-        if (major == 2) gmsh_nodes_v2(r, b, limit);
-        else gmsh_nodes_v4(r, b, limit, v41);
+        if (major == 2) gmsh_nodes_v2(r, b);
+        else gmsh_nodes_v4(r, b, v41);
         expect_end(r, "$EndNodes");
       } else {
-        if (major == 2) gmsh_elements_v2(r, b, limit);
-        else gmsh_elements_v4(r, b, limit);
+        if (major == 2) gmsh_elements_v2(r, b);
+        else gmsh_elements_v4(r, b);
         expect_end(r, "$EndElements");
       }
     } else if (tag.size() > 1 && tag[0] == '$') {
@@ -211,7 +212,7 @@ TetMesh parse_tetgen(const std::string& node_text, const std::string& node_name,
   {
     LineReader r(node_text, node_name, '#');
     const Tokens h = r.expect("the header: count dimension attributes markers");
-    const long long n = r.to_count(h[0], "node count", static_cast<long long>(node_text.size()));
+    const long long n = r.declared_count(h[0], "nodes", kNodeLineBytes);
     if (h.size() > 1 && r.to_int(h[1], "dimension") != 3) r.fail("dimension must be 3");
     for (long long i = 0; i < n; ++i) {
       const Tokens t = r.expect("a node line");
@@ -221,7 +222,7 @@ TetMesh parse_tetgen(const std::string& node_text, const std::string& node_name,
   }
   LineReader r(ele_text, ele_name, '#');
   const Tokens h = r.expect("the header: count nodes-per-tet attributes");
-  const long long m = r.to_count(h[0], "tet count", static_cast<long long>(ele_text.size()));
+  const long long m = r.declared_count(h[0], "tetrahedra", kTetLineBytes);
   if (h.size() > 1) {
     const long long per = r.to_int(h[1], "nodes per tet");
     if (per != 4 && per != 10) r.fail("nodes per tetrahedron must be 4 or 10");
@@ -231,13 +232,14 @@ TetMesh parse_tetgen(const std::string& node_text, const std::string& node_name,
 }
 
 TetMesh read_tet_file(const std::filesystem::path& path) {
+  static const std::string kWhat = "tet mesh file";
   const std::string ext = path.extension().string();
-  if (ext == ".msh") return parse_gmsh(read_text(path), path.string());
+  if (ext == ".msh") return parse_gmsh(read_regular_file(path, kWhat), path.string());
   if (ext == ".node" || ext == ".ele") {
     std::filesystem::path node = path, ele = path;
     node.replace_extension(".node");
     ele.replace_extension(".ele");
-    return parse_tetgen(read_text(node), node.string(), read_text(ele), ele.string());
+    return parse_tetgen(read_regular_file(node, kWhat), node.string(), read_regular_file(ele, kWhat), ele.string());
   }
   throw bad_input(path.string() + ": unknown tet mesh extension '" + ext + "' (expected .msh, .node or .ele)");
 }

@@ -69,4 +69,14 @@ long long LineReader::to_count(std::string_view token, const char* what, long lo
   return value;
 }
 
+long long LineReader::declared_count(std::string_view token, const char* what, long long min_bytes) const {
+  const long long value = to_int(token, what);
+  if (value < 0) fail(std::string("negative count ") + std::to_string(value) + " of " + what);
+  const long long size = static_cast<long long>(m_text.size());
+  if (value > size / min_bytes)
+    fail("declares " + std::to_string(value) + " " + what + ", more than the file's " + std::to_string(size) +
+         " bytes can hold (at least " + std::to_string(min_bytes) + " bytes each)");
+  return value;
+}
+
 }  // namespace recoil::sim::detail

@@ -26,6 +26,10 @@ class LineReader {
   long long to_int(std::string_view token, const char* what) const;
   // A count that must fit in [0, limit]: protects allocations from garbage.
   long long to_count(std::string_view token, const char* what, long long limit) const;
+  // A count declared by a header, of items that take at least `min_bytes`
+  // each: more than the whole text could hold is an error naming the count,
+  // checked before anything is allocated for them.
+  long long declared_count(std::string_view token, const char* what, long long min_bytes) const;
 
  private:
   const std::string& m_text;

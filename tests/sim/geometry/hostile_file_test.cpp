@@ -1,0 +1,91 @@
+// The tet and mesh readers refuse what is not a regular file (a FIFO at once,
+// /dev/zero behind a symlink) and header counts their file cannot hold, with
+// bad_input errors that name the file.
+#include <gtest/gtest.h>
+
+#include <fstream>
+
+#include "sim/geometry/mesh_import.h"
+#include "sim/geometry/tet_file.h"
+#include "tests/hostile_files.h"
+#include "tests/test_support.h"
+
+namespace recoil::sim {
+namespace {
+
+namespace fs = std::filesystem;
+
+void expect_names(const std::string& message, const std::string& part) {
+  EXPECT_NE(message.find(part), std::string::npos) << message;
+}
+
+TEST(TetFile, FifoIsRefusedWithoutBlocking) {
+  const fs::path dir = test::scratch_dir("tet_file_fifo");
+  test::make_fifo(dir / "pipe.msh");
+  const std::string e = test::bad_input_within_a_second([&] { read_tet_file(dir / "pipe.msh"); }, dir / "pipe.msh");
+  expect_names(e, (dir / "pipe.msh").string());
+  expect_names(e, "FIFO");
+  // TetGen reads the sibling .ele too: a FIFO there is refused the same way.
+  std::ofstream(dir / "cube.node") << "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n";
+  test::make_fifo(dir / "cube.ele");
+  expect_names(test::bad_input_within_a_second([&] { read_tet_file(dir / "cube.node"); }, dir / "cube.ele"),
+               (dir / "cube.ele").string());
+}
+
+TEST(TetFile, DeviceBehindSymlinkIsRefused) {
+  const fs::path dir = test::scratch_dir("tet_file_dev_zero");
+  test::link_to_dev_zero(dir / "zero.msh");
+  const std::string e = test::bad_input_within_a_second([&] { read_tet_file(dir / "zero.msh"); });
+  expect_names(e, (dir / "zero.msh").string());
+  expect_names(e, "device");
+}
+
+TEST(TetFile, HeaderCountBeyondFileSizeIsRefused) {
+  const fs::path dir = test::scratch_dir("tet_file_huge_count");
+  std::ofstream(dir / "huge.msh") << "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n1000000000\n1 0 0 0\n";
+  std::string e = test::bad_input_within_a_second([&] { read_tet_file(dir / "huge.msh"); });
+  expect_names(e, (dir / "huge.msh").string() + ":5:");
+  expect_names(e, "1000000000 nodes");
+
+  std::ofstream(dir / "blocks.msh") << "$MeshFormat\n4.1 0 8\n$EndMeshFormat\n$Nodes\n1 1000000000 1 1000000000\n";
+  e = test::bad_input_within_a_second([&] { read_tet_file(dir / "blocks.msh"); });
+  expect_names(e, (dir / "blocks.msh").string() + ":5:");
+  expect_names(e, "1000000000 nodes");
+
+  std::ofstream(dir / "huge.node") << "1000000000 3 0 0\n1 0 0 0\n";
+  std::ofstream(dir / "huge.ele") << "1 4 0\n1 1 1 1 1\n";
+  e = test::bad_input_within_a_second([&] { read_tet_file(dir / "huge.node"); });
+  expect_names(e, (dir / "huge.node").string() + ":1:");
+  expect_names(e, "1000000000 nodes");
+}
+
+TEST(MeshImport, FifoAndDeviceAreRefused) {
+  const fs::path dir = test::scratch_dir("mesh_import_hostile");
+  test::make_fifo(dir / "pipe.obj");
+  const std::string e1 = test::bad_input_within_a_second([&] { import_surface(dir / "pipe.obj"); }, dir / "pipe.obj");
+  expect_names(e1, (dir / "pipe.obj").string());
+  expect_names(e1, "FIFO");
+  test::link_to_dev_zero(dir / "zero.stl");
+  const std::string e2 = test::bad_input_within_a_second([&] { import_surface(dir / "zero.stl"); });
+  expect_names(e2, (dir / "zero.stl").string());
+  expect_names(e2, "device");
+}
+
+// assimp allocates what PLY and OFF headers declare, and searches forever for a missing end_header.
+TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
+  const fs::path dir = test::scratch_dir("mesh_import_huge_count");
+  const std::string ply_start = "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\n";
+  std::ofstream(dir / "huge.ply") << ply_start << "end_header\n0\n";
+  std::ofstream(dir / "unended.ply") << ply_start << "0\n";
+  std::ofstream(dir / "huge.off") << "OFF\n1000000000 1 0\n0 0 0\n";
+  const std::string e1 = test::bad_input_within_a_second([&] { import_surface(dir / "huge.ply"); });
+  expect_names(e1, (dir / "huge.ply").string());
+  expect_names(e1, "4000000000 vertex");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "unended.ply"); }), "end_header");
+  const std::string e3 = test::bad_input_within_a_second([&] { import_surface(dir / "huge.off"); });
+  expect_names(e3, (dir / "huge.off").string());
+  expect_names(e3, "1000000000 vertices");
+}
+
+}  // namespace
+}  // namespace recoil::sim
