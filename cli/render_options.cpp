@@ -1,6 +1,7 @@
 #include "cli/render_options.h"
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "cli/scene_limits.h"
 #include "core/error.h"
@@ -22,7 +23,13 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
   command.add_option("--color", options.color, "Colour of the bodies, #rrggbb (default: a palette)")->group(group);
   command.add_option("--camera-distance", options.camera_distance,
                      "Camera distance from its target in metres (default: fit the scene)")
-      ->check(CLI::Range(kCameraDistanceRange.lo, kCameraDistanceRange.hi))->group(group);
+      ->check(CLI::Validator(
+          [](std::string& text) -> std::string {
+            const double d = std::strtod(text.c_str(), nullptr);
+            return d == 0.0 || kCameraDistanceRange.contains(d) ? "" : "must be 0 (fit) or " + kCameraDistanceRange.describe();
+          },
+          "0 (fit) or METRES"))
+      ->group(group);
   command.add_option("--png-level", options.png_level, "PNG compression 0 (fastest) to 9 (smallest)")
       ->check(CLI::Range(0, 9))->group(group)->capture_default_str();
 }

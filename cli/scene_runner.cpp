@@ -200,10 +200,17 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       report.add_step(r);
       if (r.status == sim::StepStatus::inverted) ++inverted_steps;
       else if (r.status == sim::StepStatus::ok) inverted_steps = 0;
-      if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup) {
+      if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup ||
+          r.status == sim::StepStatus::runaway) {
         result.failed = true;
-        result.message = describe_failure(r, k, r.status == sim::StepStatus::nan ? "NaN in positions or velocities"
-                                                                                  : "energy blew up (diverged)", scene);
+        const std::string what = r.status == sim::StepStatus::nan ? "NaN in positions or velocities"
+                                 : r.status == sim::StepStatus::runaway
+                                     ? std::to_string(r.contacts) + " contact candidates, more than " +
+                                           std::to_string(sim::kMaxCandidatesPerVertex) +
+                                           " per surface vertex (the bodies crossed or folded through themselves; "
+                                           "a smaller dt or a stiffer material holds them)"
+                                     : "energy blew up (diverged)";
+        result.message = describe_failure(r, k, what, scene);
       } else if (r.status == sim::StepStatus::inverted && inverted_steps > grace_steps) {
         result.failed = true;
         std::ostringstream what;

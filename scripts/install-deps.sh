@@ -18,6 +18,7 @@ packages=(
   nlohmann-json3-dev     # scene files, stats
   libgtest-dev           # tests
   libbenchmark-dev       # make bench
+  python3                # the hostile-input corpus test (tests/hostile/)
   assimp-testmodels      # a corpus of real, valid and broken mesh files for the import tests
   clang                  # make fuzz: the fuzz targets are built with clang ...
   libclang-rt-14-dev     # ... and linked with its libFuzzer and sanitizer runtimes

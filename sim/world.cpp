@@ -40,6 +40,7 @@ const char* to_string(StepStatus status) {
     case StepStatus::nan: return "nan";
     case StepStatus::inverted: return "inverted";
     case StepStatus::energy_blowup: return "energy blow-up";
+    case StepStatus::runaway: return "runaway contacts";
   }
   return "?";
 }
@@ -168,13 +169,14 @@ double World::total_energy(int i, double elastic) const {
 }
 
 void World::check_health(StepReport& report) {
-  // Worst status wins (nan > energy blow-up > inverted); the first body found names it.
+  // Worst status wins (nan > runaway > energy blow-up > inverted); the first body found names it.
   auto severity = [](StepStatus s) {
     switch (s) {
       case StepStatus::ok: return 0;
       case StepStatus::inverted: return 1;
       case StepStatus::energy_blowup: return 2;
-      case StepStatus::nan: return 3;
+      case StepStatus::runaway: return 3;
+      case StepStatus::nan: return 4;
     }
     return 0;
   };

@@ -37,7 +37,14 @@ class EmbreeDevice;
 class CollisionDetector;
 
 
-enum class StepStatus { ok, nan, inverted, energy_blowup };
+// runaway: the contact search found more candidates than any physical
+// contact state has (kMaxCandidatesPerVertex), so the step was not solved.
+enum class StepStatus { ok, nan, inverted, energy_blowup, runaway };
+
+// Candidates per collision-surface vertex beyond which a step's contact set
+// is taken as runaway: a resting or sliding surface gives a few per vertex
+// (its nearby triangles and edges), a body folding through itself hundreds.
+inline constexpr long long kMaxCandidatesPerVertex = 32;
 const char* to_string(StepStatus status);
 
 // Wall-clock milliseconds per stage of the last step.
@@ -153,6 +160,12 @@ class World {
   void collide_and_solve(StepReport& report);
   std::vector<ContactSurface> contact_surfaces() const;
   std::vector<ContactPlane> contact_planes() const;
+  // Marks `report` runaway (naming the surface with the most candidates)
+  // when `candidates` exceed kMaxCandidatesPerVertex per surface vertex.
+  bool ran_away(const std::vector<ContactCandidate>& candidates, const std::vector<CollisionSurface>& surfaces,
+                StepReport& report) const;
+  // The body of contact surface s (deformable bodies, then rigid ones).
+  const std::string& surface_body_name(int s) const;
   void integrate();
   void check_health(StepReport& report);
   // Kinetic + elastic + gravitational energy of dynamic body i (deformable

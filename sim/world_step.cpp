@@ -117,6 +117,21 @@ std::vector<ContactSurface> World::contact_surfaces() const {
   return out;
 }
 
+bool World::ran_away(const std::vector<ContactCandidate>& candidates, const std::vector<CollisionSurface>& surfaces,
+                     StepReport& report) const {
+  long long vertices = 0;
+  for (const CollisionSurface& s : surfaces) vertices += s.x0.rows();
+  if (static_cast<long long>(candidates.size()) <= kMaxCandidatesPerVertex * vertices) return false;
+  // Named after the surface with the most candidates.
+  std::vector<long long> per_surface(surfaces.size(), 0);
+  for (const ContactCandidate& c : candidates) ++per_surface[static_cast<size_t>(c.surface_a)];
+  const auto worst = std::max_element(per_surface.begin(), per_surface.end()) - per_surface.begin();
+  report.status = StepStatus::runaway;
+  report.body = surface_body_name(static_cast<int>(worst));
+  report.contacts = static_cast<int>(candidates.size());
+  return true;
+}
+
 std::vector<ContactPlane> World::contact_planes() const {
   std::vector<ContactPlane> planes;
   for (size_t i = 0; i < m_planes.size(); ++i) {
@@ -137,15 +152,15 @@ std::optional<InitialOverlap> World::initial_overlap() const {
   const std::optional<SurfaceOverlap> found = deepest_overlap(
       model.collision_surfaces(Eigen::VectorXd::Zero(m_v.size())), model.collision_planes(), m_contact.margin);
   if (!found) return std::nullopt;
-  // Surfaces are the deformable bodies, then the rigid ones (contact_surfaces).
-  auto surface_name = [&](int s) {
-    const size_t i = static_cast<size_t>(s);
-    return i < m_bodies.size() ? m_bodies[i].name : m_rigid[i - m_bodies.size()].name;
-  };
-  return InitialOverlap{surface_name(found->surface),
+  return InitialOverlap{surface_body_name(found->surface),
                         found->inside_plane >= 0 ? m_planes[static_cast<size_t>(found->inside_plane)].name
-                                                 : surface_name(found->inside_surface),
+                                                 : surface_body_name(found->inside_surface),
                         found->depth};
+}
+
+const std::string& World::surface_body_name(int s) const {
+  const size_t i = static_cast<size_t>(s);
+  return i < m_bodies.size() ? m_bodies[i].name : m_rigid[i - m_bodies.size()].name;
 }
 
 void World::collide_and_solve(StepReport& report) {
@@ -158,10 +173,14 @@ void World::collide_and_solve(StepReport& report) {
   auto t = Clock::now();
   ContactModel model(contact_surfaces(), contact_planes(), DofState{&m_x, &m_v, m_dt}, m_contact.margin,
                      m_detector.get());
-  const std::vector<ContactCandidate> candidates =
-      m_detector->detect(model.collision_surfaces(m_dv), model.collision_planes());
+  const std::vector<CollisionSurface> surfaces = model.collision_surfaces(m_dv);
+  const std::vector<ContactCandidate> candidates = m_detector->detect(surfaces, model.collision_planes());
   report.profile.collide = ms_since(t);
   if (candidates.empty()) {
+    m_memory.clear();
+    return;
+  }
+  if (ran_away(candidates, surfaces, report)) {
     m_memory.clear();
     return;
   }

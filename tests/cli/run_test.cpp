@@ -185,7 +185,7 @@ TEST(RunCommand, DivergingSceneExits3NamingFrameAndBodyAndKeepsEarlierFrames) {
   const CommandResult r = run_recoil("run " + shell_quote(scene) + " -o " + shell_quote(out));
   std::cout << r.err;
   EXPECT_EQ(r.exit_code, 3) << r.err;
-  EXPECT_NE(r.err.find("recoil: error: simulation failed at frame "), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("recoil: error: " + scene.string() + ": simulation failed at frame "), std::string::npos) << r.err;
   EXPECT_NE(r.err.find("body 'column'"), std::string::npos) << r.err;
   EXPECT_TRUE(fs::exists(out / "frame_0001.png"));
   const json run = json::parse(file_bytes(out / "run.json"));
