@@ -289,6 +289,16 @@ s["bodies"].append({"name": "box2", "type": "rigid", "primitive": {"box": [0.1, 
                     "transform": {"position": [0, 0.22, 0]}})
 add("start-interpenetrating.json", json.dumps(s), "", more=["'box'", "'box2'"])
 
+# A soft bunny thrown at the ground at 80 m/s folds through itself on impact:
+# the runaway contact search stops the run (exit 3) within a few steps.
+bunny = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "assets", "meshes", "bunny.obj")
+s = base_scene()
+s["simulation"] = {"dt": 0.005, "duration": 0.5}
+s["bodies"][1] = {"name": "bunny", "type": "deformable", "mesh": os.path.abspath(bunny), "tets": {"resolution": 10},
+                  "transform": {"scale": 0.3, "position": [0, 0.3, 0]}, "velocity": [0, -80, 0],
+                  "material": {"youngs_modulus": 2e5, "damping": 0.02}}
+add("runaway-fast-bunny.json", json.dumps(s), "", exit_code=3, more=["'bunny'", "contact candidates"])
+
 # Command-line options out of range.
 for i, option in enumerate(["--camera-distance 1e308", "--fps 1e-300", "--resolution 99999999x2",
                             "--seconds 1e308", "--height 1e308", "--count 1000000000"]):
