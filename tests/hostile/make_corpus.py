@@ -52,10 +52,13 @@ def set_path(doc, pointer, value):
     node[last] = value
 
 
-def add(name, text, pointer, exit_code=2, command="run", extra="--no-render", more=()):
-    path = os.path.join(out_dir, name)
-    with open(path, "w", encoding="utf-8") as f:
+def write(name, text):
+    with open(os.path.join(out_dir, name), "w", encoding="utf-8") as f:
         f.write(text)
+
+
+def add(name, text, pointer, exit_code=2, command="run", extra="--no-render", more=()):
+    write(name, text)
     args = f"{command} {{dir}}/{name} {extra}".strip()
     expect = [name] + ([pointer] if pointer else []) + list(more)
     cases.append({"name": name, "args": args, "exit": exit_code, "expect": expect})
@@ -186,8 +189,7 @@ obj_files = {
     "garbage.obj": "\u00ff\u00fe binary \u0000\u0001 garbage\n" * 20,
 }
 for i, (mesh, text) in enumerate(obj_files.items()):
-    with open(os.path.join(out_dir, mesh), "w", encoding="utf-8") as f:
-        f.write(text)
+    write(mesh, text)
     for kind in ("rigid", "deformable"):
         s = base_scene()
         s["bodies"][1] = {"name": "m", "type": kind, "mesh": mesh}
@@ -210,16 +212,14 @@ tet_files = {
     "gmsh-no-end.msh": "$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$Nodes\n4\n1 0 0 0\n",
 }
 for mesh, text in tet_files.items():
-    with open(os.path.join(out_dir, mesh), "w", encoding="utf-8") as f:
-        f.write(text)
+    write(mesh, text)
     stem = os.path.splitext(mesh)[0]
     # A coordinate of 1e300 makes its tetrahedron's volume overflow: the .ele
     # line that uses it is named.
     named = stem + ".ele" if stem == "nodes-huge" else mesh
     if mesh.endswith(".node"):
         # TetGen pairs FILE.node with FILE.ele.
-        with open(os.path.join(out_dir, stem + ".ele"), "w") as f:
-            f.write("1 4 0\n1 1 2 3 4\n")
+        write(stem + ".ele", "1 4 0\n1 1 2 3 4\n")
     s = base_scene()
     s["bodies"][1] = {"name": "t", "type": "deformable", "mesh": mesh}
     add(f"tet-{stem}.json", json.dumps(s), "/bodies/1/mesh", more=[named])
@@ -231,19 +231,15 @@ ele_files = {
 good_node = "4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n"
 for ele, text in ele_files.items():
     stem = os.path.splitext(ele)[0]
-    with open(os.path.join(out_dir, ele), "w") as f:
-        f.write(text)
-    with open(os.path.join(out_dir, stem + ".node"), "w") as f:
-        f.write(good_node)
+    write(ele, text)
+    write(stem + ".node", good_node)
     s = base_scene()
     s["bodies"][1] = {"name": "t", "type": "deformable", "mesh": ele}
     add(f"tet-{stem}.json", json.dumps(s), "/bodies/1/mesh", more=[ele])
 
 # An inverted tetrahedron is turned the right way, not refused: the run succeeds.
-with open(os.path.join(out_dir, "ele-inverted.ele"), "w") as f:
-    f.write("1 4 0\n1 1 3 2 4\n")
-with open(os.path.join(out_dir, "ele-inverted.node"), "w") as f:
-    f.write(good_node)
+write("ele-inverted.ele", "1 4 0\n1 1 3 2 4\n")
+write("ele-inverted.node", good_node)
 s = base_scene()
 s["bodies"][1] = {"name": "t", "type": "deformable", "mesh": "ele-inverted.ele"}
 add("tet-ele-inverted.json", json.dumps(s), "", exit_code=0)
@@ -251,11 +247,9 @@ cases[-1]["expect"] = []
 
 # Special files in place of a tet file: a FIFO and /dev/zero behind a symlink.
 os.mkfifo(os.path.join(out_dir, "fifo.ele"))
-with open(os.path.join(out_dir, "fifo.node"), "w") as f:
-    f.write(good_node)
+write("fifo.node", good_node)
 os.symlink("/dev/zero", os.path.join(out_dir, "zero.ele"))
-with open(os.path.join(out_dir, "zero.node"), "w") as f:
-    f.write(good_node)
+write("zero.node", good_node)
 for special in ("fifo.ele", "zero.ele"):
     s = base_scene()
     s["bodies"][1] = {"name": "t", "type": "deformable", "mesh": special}
@@ -264,19 +258,18 @@ for special in ("fifo.ele", "zero.ele"):
 # Many bodies: a million are refused by the file's size, 10 001 by their
 # count, and 10 000 whose last is invalid after a linear-time parse.
 def many_bodies(name, count, last):
-    with open(os.path.join(out_dir, name), "w") as f:
-        f.write('{"recoil": 1, "name": "many", "bodies": [{"name": "ground", "type": "plane"}')
-        for i in range(1, count):
-            f.write(f',{{"name": "b{i}", "type": "rigid", "primitive": {{"box": [0.02, 0.02, 0.02]}}, '
-                    f'"transform": {{"position": [{i % 1000 * 0.03}, {i // 1000 * 0.03 + 0.1}, 0]}}}}')
-        f.write(f',{last}]}}')
+    bodies = ['{"name": "ground", "type": "plane"}']
+    for i in range(1, count):
+        bodies.append(f'{{"name": "b{i}", "type": "rigid", "primitive": {{"box": [0.02, 0.02, 0.02]}}, '
+                      f'"transform": {{"position": [{i % 1000 * 0.03}, {i // 1000 * 0.03 + 0.1}, 0]}}}}')
+    bodies.append(last)
+    write(name, '{"recoil": 1, "name": "many", "bodies": [' + ",".join(bodies) + "]}")
 
 
 many_bodies("million-bodies.json", 1000000, '{"name": "last", "type": "rigid", "primitive": {"box": [1, 1, 1]}}')
 cases.append({"name": "million-bodies.json", "args": "run {dir}/million-bodies.json --no-render", "exit": 2,
               "expect": ["million-bodies.json", "MiB; at most 32 MiB"]})
-with open(os.path.join(out_dir, "too-many-bodies.json"), "w") as f:
-    f.write('{"recoil": 1, "bodies": [' + ",".join(['{"type": "plane"}'] * 10001) + "]}")
+write("too-many-bodies.json", '{"recoil": 1, "bodies": [' + ",".join(['{"type": "plane"}'] * 10001) + "]}")
 cases.append({"name": "too-many-bodies.json", "args": "run {dir}/too-many-bodies.json --no-render", "exit": 2,
               "expect": ["too-many-bodies.json", "/bodies", "at most 10000"]})
 many_bodies("last-body-invalid.json", 9999, '{"name": "last", "type": "rigid", "primitive": {"sphere": -1}}')
@@ -300,12 +293,11 @@ s["bodies"][1] = {"name": "bunny", "type": "deformable", "mesh": os.path.abspath
 add("runaway-fast-bunny.json", json.dumps(s), "", exit_code=3, more=["'bunny'", "contact candidates"])
 
 # Command-line options out of range.
+write("cube.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
+      "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n")
 for i, option in enumerate(["--camera-distance 1e308", "--fps 1e-300", "--resolution 99999999x2",
                             "--seconds 1e308", "--height 1e308", "--count 1000000000"]):
     command = "drop" if any(k in option for k in ("--seconds", "--height", "--count")) else "turntable"
-    with open(os.path.join(out_dir, "cube.obj"), "w") as f:
-        f.write("v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 0\nv 0 0 1\nv 1 0 1\nv 0 1 1\nv 1 1 1\n"
-                "f 1 3 4 2\nf 5 6 8 7\nf 1 2 6 5\nf 3 7 8 4\nf 1 5 7 3\nf 2 4 8 6\n")
     flag = option.split()[0]
     cases.append({"name": f"option-{i:02d}", "args": f"{command} {{dir}}/cube.obj {option}",
                   "exit": 2, "expect": [flag]})
