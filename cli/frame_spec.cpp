@@ -4,6 +4,7 @@
 #include <cctype>
 #include <sstream>
 
+#include "cli/scene_limits.h"
 #include "core/error.h"
 
 namespace recoil::cli {
@@ -15,13 +16,13 @@ int parse_frame(const std::string& text, const std::string& spec, const std::str
     throw bad_input(option + ": expected frame numbers like 1-100, 1-100:5 or 1,3,7-9, got '" + spec + "'");
   const int n = std::stoi(text);
   if (n < 1) throw bad_input(option + ": frame numbers start at 1, got '" + spec + "'");
+  if (n > kMaxFrames) throw bad_input(option + ": frame numbers go up to " + std::to_string(kMaxFrames) + ", got '" + spec + "'");
   return n;
 }
 
 }  // namespace
 
 std::vector<int> parse_frame_spec(const std::string& spec, const std::string& option) {
-  constexpr int kMaxFrames = 10000000;
   std::vector<int> frames;
   std::stringstream parts(spec);
   std::string part;

@@ -27,6 +27,14 @@ std::string short_number(double x) {
   return s.str();
 }
 
+// `text` as a JSON string (control characters escaped, so nothing reaches the
+// terminal raw), cut to its first 60 bytes.
+std::string quoted_excerpt(const std::string& text) {
+  constexpr size_t kShown = 60;
+  const nlohmann::json shown = text.size() <= kShown ? text : text.substr(0, kShown);
+  return shown.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace) + (text.size() > kShown ? "..." : "");
+}
+
 // Byte `offset` of `text` as 1-based line and column.
 std::pair<size_t, size_t> line_and_column(const std::string& text, size_t offset) {
   size_t line = 1, column = 1;
@@ -127,7 +135,8 @@ nlohmann::json parse_json_text(const std::string& text, const std::string& file)
     // Only a number too large for a double is out of range while parsing.
     PointerTracker tracker;
     nlohmann::json::sax_parse(text, &tracker);
-    const auto [line, column] = line_and_column(text, tracker.error_offset());
+    // The SAX position is just past the number, as parse_error's byte is.
+    const auto [line, column] = line_and_column(text, tracker.error_offset() > 0 ? tracker.error_offset() - 1 : 0);
     throw bad_input(file + ": " + tracker.pointer() + ": number beyond the range of a double (line " +
                     std::to_string(line) + ", column " + std::to_string(column) + ")");
   } catch (const nlohmann::json::parse_error& e) {
@@ -176,7 +185,7 @@ void JsonCursor::fail(const std::string& message) const {
 
 void JsonCursor::type_error(const char* expected) const {
   std::string got = json_type_name(*m_in);
-  if (m_in->is_string()) got += " \"" + m_in->get<std::string>() + "\"";
+  if (m_in->is_string()) got += " " + quoted_excerpt(m_in->get<std::string>());
   else if (m_in->is_number() || m_in->is_boolean()) got += " " + m_in->dump();
   fail(std::string("expected ") + expected + ", got " + got);
 }
@@ -187,7 +196,7 @@ void JsonCursor::expect_object(const std::vector<std::string>& allowed) const {
   for (const auto& [key, value] : m_in->items()) {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     const std::string suggestion = near_miss(key, allowed);
-    std::string message = "unknown key \"" + key + "\"";
+    std::string message = "unknown key " + quoted_excerpt(key);
     if (!suggestion.empty()) message += "; did you mean \"" + suggestion + "\"?";
     else {
       message += "; expected one of";

@@ -1,5 +1,10 @@
 #include "cli/output_dir.h"
 
+#include <signal.h>
+
+#include <cerrno>
+#include <cstdlib>
+
 #include "core/error.h"
 
 namespace recoil::cli {
@@ -15,14 +20,19 @@ void ensure_output_dir(const fs::path& dir) {
 }
 
 int remove_stale_temporaries(const fs::path& dir) {
-  const auto is_temporary = [](const std::string& name) {
-    return (name.rfind("frame_", 0) == 0 && name.find(".png.tmp-") != std::string::npos) ||
-           name.rfind("scene.json.tmp-", 0) == 0 || name.rfind("run.json.tmp-", 0) == 0;
+  // NAME.tmp-PID-N is stale once process PID is gone; another run still
+  // writing into the same folder keeps its own.
+  const auto is_stale_temporary = [](const std::string& name) {
+    const bool ours = (name.rfind("frame_", 0) == 0 && name.find(".png.tmp-") != std::string::npos) ||
+                      name.rfind("scene.json.tmp-", 0) == 0 || name.rfind("run.json.tmp-", 0) == 0;
+    if (!ours) return false;
+    const long pid = std::strtol(name.c_str() + name.find(".tmp-") + 5, nullptr, 10);
+    return pid <= 0 || (::kill(static_cast<pid_t>(pid), 0) != 0 && errno == ESRCH);
   };
   std::error_code ec;
   int removed = 0;
   for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
-    if (!is_temporary(it->path().filename().string())) continue;
+    if (!is_stale_temporary(it->path().filename().string())) continue;
     std::error_code remove_ec;
     fs::remove(it->path(), remove_ec);
     if (remove_ec) throw output_error("cannot remove stale " + it->path().string() + ": " + remove_ec.message());

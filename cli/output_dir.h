@@ -16,8 +16,9 @@ void ensure_output_dir(const std::filesystem::path& dir);
 
 namespace recoil::cli {
 
-// Deletes the temporaries a killed run leaves in `dir` (frame_N.png.tmp-*,
-// scene.json.tmp-*, run.json.tmp-*: core/atomic_write.h); returns how many.
+// Deletes the temporaries a killed run left in `dir` (frame_N.png.tmp-PID-*,
+// scene.json.tmp-*, run.json.tmp-*: core/atomic_write.h) whose process PID is
+// no longer running; returns how many.
 // Throws output_failed with the reason when one cannot be removed.
 int remove_stale_temporaries(const std::filesystem::path& dir);
 

@@ -62,6 +62,8 @@ struct SceneDesc {
 
   // Frames in [0, duration] at render.fps: frame k shows time (k - 1) / fps.
   int frame_count() const;
+  // What messages call the scene: its file, or its name when built in memory.
+  std::string label() const { return file.empty() ? name : file.string(); }
   const SceneBody* find(const std::string& body_name) const;
 };
 

@@ -7,6 +7,7 @@
 #include "cli/json_cursor.h"
 #include "cli/scene_bodies.h"
 #include "core/error.h"
+#include "core/regular_file.h"
 
 namespace recoil::cli {
 namespace fs = std::filesystem;
@@ -146,18 +147,19 @@ SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, c
     (root.has("name") ? root.child("name") : root).fail(root.has("name") ? why : "the file's name " + why + "; give \"name\"");
   if (root.has("description")) root.child("description").string();
   parse_simulation(root.child_or_empty("simulation"), scene);
-  const std::vector<JsonCursor> bodies = root.child("bodies").elements();
-  if (bodies.empty()) root.child("bodies").fail("a scene needs at least one body");
-  if (bodies.size() > static_cast<size_t>(kMaxBodies))
-    root.child("bodies").fail(std::to_string(bodies.size()) + " bodies; at most " + std::to_string(kMaxBodies));
+  const JsonCursor bodies_field = root.child("bodies");
+  if (bodies_field.value().is_array() && bodies_field.value().size() > static_cast<size_t>(kMaxBodies))
+    bodies_field.fail(std::to_string(bodies_field.value().size()) + " bodies; at most " + std::to_string(kMaxBodies));
+  const std::vector<JsonCursor> bodies = bodies_field.elements();
+  if (bodies.empty()) bodies_field.fail("a scene needs at least one body");
   parse_bodies(bodies, base_dir, scene);
   parse_render(root.child_or_empty("render"), scene);
   return scene;
 }
 
 SceneDesc load_scene(const fs::path& file) {
+  require_regular_file(file, "the scene file");
   std::error_code ec;
-  if (!fs::is_regular_file(file, ec)) throw bad_input(file.string() + ": not a regular file (a scene is a .json file)");
   // Its parsed form takes about ten times the text: the size is bounded first.
   if (const auto size = fs::file_size(file, ec); !ec && size > kMaxSceneBytes)
     throw bad_input(file.string() + ": the scene file is " + std::to_string(size >> 20) + " MiB; at most " +

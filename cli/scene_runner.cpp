@@ -44,7 +44,7 @@ constexpr double kInversionGrace = 0.1;
 
 Error scene_error(const Error& e, const SceneDesc& scene) {
   const std::string message = e.what();
-  const std::string file = scene.file.empty() ? scene.name : scene.file.string();
+  const std::string file = scene.label();
   struct Prefix {
     const char* text;
     bool (*matches)(SceneBodyType);
@@ -74,7 +74,7 @@ namespace {
 
 std::string describe_failure(const sim::StepReport& r, int frame, const std::string& what, const SceneDesc& scene) {
   std::ostringstream s;
-  s << (scene.file.empty() ? scene.name : scene.file.string()) << ": simulation failed at frame " << frame << " (step " << r.step << ", t = " << r.time << " s): body '" << r.body
+  s << scene.label() << ": simulation failed at frame " << frame << " (step " << r.step << ", t = " << r.time << " s): body '" << r.body
     << "': " << what;
   return s.str();
 }
@@ -90,7 +90,7 @@ std::string describe_overlap(const sim::InitialOverlap& overlap, const SceneDesc
   };
   std::ostringstream s;
   s.precision(3);
-  s << (scene.file.empty() ? scene.name : scene.file.string()) << ": body " << where(overlap.body)
+  s << scene.label() << ": body " << where(overlap.body)
     << " starts " << overlap.depth * 1e3 << " mm inside " << where(overlap.inside) << ", more than the "
     << scene.world.contact.margin * 1e3 << " mm contact margin; move them apart";
   return s.str();
@@ -127,7 +127,8 @@ long frame_step(int frame, double fps, double dt) { return std::lround((frame - 
 RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const auto start = Clock::now();
   const SceneDesc& scene = job.scene;
-  check_work_limits(scene, job.render, memory_limit_bytes(global.max_memory_gib));
+  check_work_limits(scene, job.frames.empty() ? scene.frame_count() : job.frames.back(), job.render,
+                    memory_limit_bytes(global.max_memory_gib));
   const double fps = scene.render.fps, dt = scene.world.dt;
   const std::vector<int> selected = job.frames.empty() ? all_frames(scene.frame_count()) : job.frames;
   const int last_frame = selected.back();
@@ -161,7 +162,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       renderer = std::make_unique<render::Renderer>(settings);
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::bad_input) throw;
-      throw Error(e.kind(), (scene.file.empty() ? scene.name : scene.file.string()) + ": /render/resolution: " + e.what());
+      throw Error(e.kind(), scene.label() + ": /render/resolution: " + e.what());
     }
     // One encoder per spare core; llvmpipe uses the others while drawing.
     const int encoders = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);

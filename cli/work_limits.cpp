@@ -20,15 +20,13 @@ namespace {
 constexpr double kBytesPerTet = 640.0;
 
 // Upper bound on the tets a lattice of `resolution` cells along the longest
-// side gives a body: six per cell of the box around its scaled surface.
+// side gives a body: six per cell of the box around its surface (the lattice
+// is laid on the surface before the transform scales it).
 double lattice_tets(const sim::DeformableBodyDesc& body) {
   if (!body.tets.empty()) return body.tets.num_tets();
   if (body.mesh.vertices.rows() == 0) return 0.0;
-  const Eigen::Vector3d extent = ((body.mesh.vertices.colwise().maxCoeff() - body.mesh.vertices.colwise().minCoeff())
-                                      .transpose()
-                                      .array() *
-                                  body.transform.scale.array().abs())
-                                     .matrix();
+  const Eigen::Vector3d extent =
+      (body.mesh.vertices.colwise().maxCoeff() - body.mesh.vertices.colwise().minCoeff()).transpose();
   const double longest = extent.maxCoeff();
   if (!(longest > 0.0)) return 0.0;
   double cells = 1.0;
@@ -77,17 +75,19 @@ MemoryEstimate estimate_memory(const SceneDesc& scene, bool render) {
   return estimate;
 }
 
-void check_work_limits(const SceneDesc& scene, bool render, double memory_limit) {
-  const std::string file = scene.file.empty() ? scene.name : scene.file.string();
-  const double steps = scene.duration / scene.world.dt;
+void check_work_limits(const SceneDesc& scene, int last_frame, bool render, double memory_limit) {
+  const std::string file = scene.label();
+  // The run simulates up to its last frame, which --frames may put past the duration.
+  const double frames = std::max(std::floor(scene.duration * scene.render.fps + 1e-9) + 1.0, double(last_frame));
+  const double steps = (frames - 1.0) / (scene.render.fps * scene.world.dt);
   if (steps > static_cast<double>(kMaxSteps))
-    throw bad_input(file + ": /simulation/duration: " + format_number("%g", scene.duration) + " s at dt " +
-                    format_number("%g", scene.world.dt) + " s is " + format_number("%.3g", steps) +
-                    " steps; at most " + format_number("%.0f", static_cast<double>(kMaxSteps)));
-  const double frames = std::floor(scene.duration * scene.render.fps + 1e-9) + 1.0;
+    throw bad_input(file + ": /simulation/duration: " + format_number("%.3g", frames) + " frames at " +
+                    format_number("%g", scene.render.fps) + " fps and dt " + format_number("%g", scene.world.dt) +
+                    " s is " + format_number("%.3g", steps) + " steps; at most " +
+                    format_number("%.0f", static_cast<double>(kMaxSteps)));
   if (frames > kMaxFrames)
     throw bad_input(file + ": /simulation/duration: " + format_number("%g", scene.duration) + " s at " +
-                    format_number("%g", scene.render.fps) + " fps is " + format_number("%.3g", frames) +
+                    format_number("%g", scene.render.fps) + " fps (or --frames) is " + format_number("%.3g", frames) +
                     " frames; at most " + std::to_string(kMaxFrames));
   const MemoryEstimate memory = estimate_memory(scene, render);
   if (memory.bytes > memory_limit)

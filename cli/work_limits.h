@@ -21,7 +21,7 @@ struct MemoryEstimate {
 MemoryEstimate estimate_memory(const SceneDesc& scene, bool render);
 
 // Throws bad_input naming the scene file and field when the steps, frames or
-// estimated memory of running `scene` exceed their limits.
-void check_work_limits(const SceneDesc& scene, bool render, double memory_limit);
+// estimated memory of running `scene` up to `last_frame` exceed their limits.
+void check_work_limits(const SceneDesc& scene, int last_frame, bool render, double memory_limit);
 
 }  // namespace recoil::cli

@@ -149,8 +149,11 @@ std::vector<ContactPlane> World::contact_planes() const {
 std::optional<InitialOverlap> World::initial_overlap() const {
   const ContactModel model(contact_surfaces(), contact_planes(), DofState{&m_x, &m_v, m_dt}, m_contact.margin,
                            m_detector.get());
-  const std::optional<SurfaceOverlap> found = deepest_overlap(
-      model.collision_surfaces(Eigen::VectorXd::Zero(m_v.size())), model.collision_planes(), m_contact.margin);
+  std::vector<CollisionSurface> surfaces = model.collision_surfaces(Eigen::VectorXd::Zero(m_v.size()));
+  for (CollisionSurface& s : surfaces) s.x1 = s.x0;  // where they are, not where they move
+  const std::vector<CollisionPlane> planes = model.collision_planes();
+  const std::optional<SurfaceOverlap> found =
+      deepest_overlap(surfaces, planes, m_detector->detect(surfaces, planes), m_contact.margin);
   if (!found) return std::nullopt;
   return InitialOverlap{surface_body_name(found->surface),
                         found->inside_plane >= 0 ? m_planes[static_cast<size_t>(found->inside_plane)].name

@@ -16,11 +16,17 @@ struct SurfaceOverlap {
   double depth = 0.0;      // m, the vertex's distance to that surface or plane
 };
 
-// The deepest vertex of one surface (at x0) that lies inside another surface
-// (winding number above 1/2) or behind a plane by more than `margin`, metres.
+// A vertex of one surface (at x0) that lies inside another surface (winding
+// number above 1/2) or behind a plane by more than `margin`, metres: the
+// deepest behind a plane, or the deepest of the first kDepthProbes vertices
+// found inside a surface. `near` are the detector's candidates at x0 within
+// the margin: a vertex with a vertex-triangle candidate against a surface is
+// within the margin of it, so only the others have their depth measured.
 // Pairs of prescribed (static or kinematic) surfaces, and prescribed surfaces
 // against planes, are never reported: nothing is solved between them.
+inline constexpr int kDepthProbes = 64;
 std::optional<SurfaceOverlap> deepest_overlap(const std::vector<CollisionSurface>& surfaces,
-                                              const std::vector<CollisionPlane>& planes, double margin);
+                                              const std::vector<CollisionPlane>& planes,
+                                              const std::vector<ContactCandidate>& near, double margin);
 
 }  // namespace recoil::sim

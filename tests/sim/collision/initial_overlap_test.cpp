@@ -24,7 +24,7 @@ CollisionSurface cube_at(const Eigen::Vector3d& center, SurfaceKind kind = Surfa
 TEST(InitialOverlap, CubesPushedTogetherAreFoundWithTheirDepth) {
   // The upper cube's bottom corners sit 30 mm inside the lower one.
   const std::vector<CollisionSurface> surfaces = {cube_at({0, 0.05, 0}), cube_at({0, 0.12, 0})};
-  const auto overlap = deepest_overlap(surfaces, {}, kMargin);
+  const auto overlap = deepest_overlap(surfaces, {}, {}, kMargin);
   ASSERT_TRUE(overlap.has_value());
   EXPECT_EQ(overlap->inside_plane, -1);
   EXPECT_NE(overlap->surface, overlap->inside_surface);
@@ -34,19 +34,19 @@ TEST(InitialOverlap, CubesPushedTogetherAreFoundWithTheirDepth) {
 TEST(InitialOverlap, TouchingOrWithinTheMarginIsContactNotOverlap) {
   for (const double gap : {0.0, -0.001, 0.0005}) {
     const std::vector<CollisionSurface> surfaces = {cube_at({0, 0.05, 0}), cube_at({0, 0.15 + gap, 0})};
-    EXPECT_FALSE(deepest_overlap(surfaces, {}, kMargin).has_value()) << gap;
+    EXPECT_FALSE(deepest_overlap(surfaces, {}, {}, kMargin).has_value()) << gap;
   }
 }
 
 TEST(InitialOverlap, ABodyBelowThePlaneIsBehindIt) {
   CollisionPlane ground;
   ground.normal = Eigen::Vector3d::UnitY();
-  const auto overlap = deepest_overlap({cube_at({0, 0.02, 0})}, {ground}, kMargin);
+  const auto overlap = deepest_overlap({cube_at({0, 0.02, 0})}, {ground}, {}, kMargin);
   ASSERT_TRUE(overlap.has_value());
   EXPECT_EQ(overlap->inside_plane, 0);
   EXPECT_NEAR(overlap->depth, 0.03, 1e-12);
   // Resting on it (1 mm in, within the margin) is a contact.
-  EXPECT_FALSE(deepest_overlap({cube_at({0, 0.049, 0})}, {ground}, kMargin).has_value());
+  EXPECT_FALSE(deepest_overlap({cube_at({0, 0.049, 0})}, {ground}, {}, kMargin).has_value());
 }
 
 TEST(InitialOverlap, PrescribedSurfacesMayOverlapEachOtherAndThePlane) {
@@ -54,7 +54,7 @@ TEST(InitialOverlap, PrescribedSurfacesMayOverlapEachOtherAndThePlane) {
   ground.normal = Eigen::Vector3d::UnitY();
   const std::vector<CollisionSurface> surfaces = {cube_at({0, 0.0, 0}, SurfaceKind::static_body),
                                                   cube_at({0.05, 0.0, 0}, SurfaceKind::kinematic)};
-  EXPECT_FALSE(deepest_overlap(surfaces, {ground}, kMargin).has_value());
+  EXPECT_FALSE(deepest_overlap(surfaces, {ground}, {}, kMargin).has_value());
 }
 
 }  // namespace
