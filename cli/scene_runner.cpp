@@ -90,8 +90,8 @@ std::string describe_overlap(const sim::InitialOverlap& overlap, const SceneDesc
   };
   std::ostringstream s;
   s.precision(3);
-  s << scene.label() << ": body " << where(overlap.body)
-    << " starts " << overlap.depth * 1e3 << " mm inside " << where(overlap.inside) << ", more than the "
+  s << scene.label() << ": body " << where(overlap.body) << " starts inside " << where(overlap.inside)
+    << ": a vertex of it lies " << overlap.depth * 1e3 << " mm deep, more than the "
     << scene.world.contact.margin * 1e3 << " mm contact margin; move them apart";
   return s.str();
 }
