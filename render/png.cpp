@@ -3,6 +3,7 @@
 #include <png.h>
 
 #include <cstdio>
+#include <algorithm>
 #include <cstring>
 #include <fstream>
 #include <memory>
@@ -148,12 +149,30 @@ bool decode_raw(ReadSource* source, Image* image, PngError* error, std::vector<p
   return true;
 }
 
+// libpng allocates a chunk's declared length before reading it (an iTXt
+// chunk claiming 1.4 GB in a 57-byte file), so every chunk must be seen to
+// fit inside the file first. Throws bad_input naming the chunk.
+void check_chunks_fit(const std::string& bytes, const fs::path& path) {
+  size_t offset = 8;
+  while (offset + 8 <= bytes.size()) {  // a chunk's length and type
+    const auto* chunk = reinterpret_cast<png_const_bytep>(bytes.data() + offset);
+    const size_t length = png_get_uint_32(chunk);
+    if (offset + 12 > bytes.size() || length > bytes.size() - offset - 12)
+      throw bad_input(path.string() + ": PNG chunk '" + bytes.substr(offset + 4, 4) + "' at byte " +
+                      std::to_string(offset) + " declares " + std::to_string(length) +
+                      " bytes, more than the file holds");
+    if (std::memcmp(chunk + 4, "IEND", 4) == 0) return;
+    offset += 12 + length;
+  }
+}
+
 }  // namespace
 
 Image read_png(const fs::path& path) {
   const std::string bytes = read_regular_file(path, "PNG file");
   if (bytes.size() < 8 || png_sig_cmp(reinterpret_cast<png_const_bytep>(bytes.data()), 0, 8) != 0)
     throw bad_input(path.string() + ": not a PNG file");
+  check_chunks_fit(bytes, path);
   ReadSource source{&bytes};
   Image image;
   PngError error;
