@@ -164,9 +164,8 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       if (e.kind() != ErrorKind::bad_input) throw;
       throw Error(e.kind(), scene.label() + ": /render/resolution: " + e.what());
     }
-    // One encoder per spare core; llvmpipe uses the others while drawing.
-    const int encoders = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
-    writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), encoders, 2 * encoders + 1);
+    const render::FrameWriterSize size = render::default_frame_writer_size();
+    writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), size.threads, size.capacity);
     view = std::make_unique<SceneView>(scene, world->surfaces(), static_cast<double>(settings.width) / settings.height);
   }
 

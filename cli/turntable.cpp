@@ -28,9 +28,8 @@ TurntableTimings render_turntable(sim::TriMesh mesh, const TurntableJob& job,
 
   render::Renderer renderer(job.settings);
   const double aspect = static_cast<double>(job.settings.width) / job.settings.height;
-  // One encoder per spare core; llvmpipe uses the others while drawing.
-  const int encoders = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
-  render::FrameWriter writer(job.png, encoders, 2 * encoders + 1);
+  const render::FrameWriterSize size = render::default_frame_writer_size();
+  render::FrameWriter writer(job.png, size.threads, size.capacity);
   TurntableTimings timings;
   render::Image image;
   for (int frame = 0; frame < job.frames && !pending_interrupt(); ++frame) {

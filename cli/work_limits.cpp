@@ -4,12 +4,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <thread>
 
 #include "cli/format_number.h"
 #include "cli/render_options.h"
 #include "cli/scene_limits.h"
 #include "core/error.h"
+#include "render/frame_writer.h"
 
 namespace recoil::cli {
 namespace {
@@ -65,10 +65,11 @@ MemoryEstimate estimate_memory(const SceneDesc& scene, bool render) {
   if (render) {
     const render::RenderSettings settings = to_render_settings(scene.render);
     const double pixels = static_cast<double>(settings.width) * settings.height;
-    // Colour and depth per sample, a resolved copy, and the frames waiting in
-    // the encoder queue (one per encoder thread and twice as many queued).
-    const int encoders = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
-    const double bytes = pixels * (8.0 * std::max(1, scene.render.msaa) + 4.0 + 4.0 * (3 * encoders + 1));
+    // Colour and depth per sample, a resolved copy, and an RGBA8 image per
+    // encoder thread and per frame queued for them.
+    const render::FrameWriterSize writer = render::default_frame_writer_size();
+    const double bytes =
+        pixels * (8.0 * std::max(1, scene.render.msaa) + 4.0 + 4.0 * (writer.threads + writer.capacity));
     add(bytes, "/render/resolution",
         scene.render.resolution + " pixels at msaa " + std::to_string(scene.render.msaa));
   }

@@ -1,10 +1,17 @@
 #include "render/frame_writer.h"
 
+#include <algorithm>
+
 #include <chrono>
 
 #include "core/check.h"
 
 namespace recoil::render {
+
+FrameWriterSize default_frame_writer_size() {
+  const int threads = std::max(1, static_cast<int>(std::thread::hardware_concurrency()) - 1);
+  return {threads, 2 * threads + 1};
+}
 
 FrameWriter::FrameWriter(PngOptions options, int threads, int capacity) : m_options(options), m_capacity(capacity) {
   RECOIL_CHECK(threads >= 1 && capacity >= 1, "threads " << threads << ", capacity " << capacity);

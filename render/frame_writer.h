@@ -16,6 +16,14 @@
 
 namespace recoil::render {
 
+// The writer every command uses: one encoder thread per spare core
+// (llvmpipe draws on the others) and room for two frames per encoder waiting.
+struct FrameWriterSize {
+  int threads = 1;
+  int capacity = 3;
+};
+FrameWriterSize default_frame_writer_size();
+
 class FrameWriter {
  public:
   // threads: encoder threads (>= 1); capacity: frames waiting at most.
