@@ -10,7 +10,7 @@ CMAKE_FLAGS ?=
 # this only when it creates a build folder, so existing ones keep theirs.
 export CMAKE_GENERATOR ?= Ninja
 
-.PHONY: all deps build demo test test-sanitize fuzz fuzz-smoke bench clean
+.PHONY: all deps build demo test test-sanitize fuzz-build fuzz fuzz-smoke bench clean
 
 all: build
 
@@ -47,7 +47,8 @@ test-sanitize: deps
 
 # libFuzzer targets for the scene parser and the mesh, tet and PNG readers
 # (fuzz/, docs/fuzzing.md), built with clang into their own folder and run one
-# after another for FUZZ_SECONDS each; fails when any finds a crash.
+# after another for FUZZ_SECONDS each; fails when any finds a crash. The smoke
+# run replays FUZZ_RUNS fixed mutations of the committed seeds per target.
 FUZZ_BUILD   ?= build-fuzz
 FUZZ_SECONDS ?= 180
 FUZZ_TARGETS ?= fuzz_scene fuzz_gmsh fuzz_tetgen fuzz_mesh_import fuzz_png
@@ -56,13 +57,15 @@ $(FUZZ_BUILD)/CMakeCache.txt: | deps
 	cmake -S . -B $(FUZZ_BUILD) -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_C_COMPILER=clang \
 	  -DCMAKE_CXX_COMPILER=clang++ -DRECOIL_FUZZ=ON -DRECOIL_BUILD_TESTS=OFF -DRECOIL_BUILD_BENCH=OFF
 
-fuzz: deps $(FUZZ_BUILD)/CMakeCache.txt
+fuzz-build: deps $(FUZZ_BUILD)/CMakeCache.txt
 	cmake --build $(FUZZ_BUILD) -j $(JOBS) --target $(FUZZ_TARGETS)
-	bash fuzz/run.sh $(FUZZ_BUILD) $(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
-# CI's short run: 20 s per target.
-fuzz-smoke:
-	$(MAKE) fuzz FUZZ_SECONDS=20
+fuzz: fuzz-build
+	bash fuzz/run.sh $(FUZZ_BUILD) seconds=$(FUZZ_SECONDS) $(FUZZ_TARGETS)
+
+FUZZ_RUNS ?= 20000
+fuzz-smoke: fuzz-build
+	bash fuzz/run.sh $(FUZZ_BUILD) runs=$(FUZZ_RUNS) $(FUZZ_TARGETS)
 
 bench: build
 	$(BUILD)/recoil_bench

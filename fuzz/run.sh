@@ -1,23 +1,31 @@
 #!/usr/bin/env bash
-# Runs each fuzz target for a bounded time and prints a table of executions
-# and findings; exits 1 when any target found a crash, hang or runaway
-# allocation (the input is kept in BUILD/fuzz-findings/NAME/).
-#   fuzz/run.sh BUILD SECONDS fuzz_gmsh fuzz_png ...
-# Each target starts from its committed seeds (fuzz/corpus/NAME, which also
-# hold the inputs of fixed findings) and the corpus it grew in earlier runs
-# (BUILD/fuzz-corpus/NAME), with the dictionary fuzz/NAME.dict.
+# Runs each fuzz target and prints a table of executions and findings; exits
+# 1 when any target found a crash, hang or runaway allocation (the input is
+# kept in BUILD/fuzz-findings/NAME/).
+#   fuzz/run.sh BUILD seconds=N fuzz_gmsh fuzz_png ...   explore for N s each
+#   fuzz/run.sh BUILD runs=N fuzz_gmsh fuzz_png ...      replay N fixed mutations each
+# Exploring starts from the committed seeds (fuzz/corpus/NAME, which also hold
+# the inputs of fixed findings) and the corpus grown in earlier runs
+# (BUILD/fuzz-corpus/NAME). Replaying starts from the seeds alone, with a
+# fixed random seed and a count instead of a clock, so that it tries the same
+# inputs on every machine: CI's smoke run can only fail on a change, never on luck.
 set -uo pipefail
-build=$1 seconds=$2
+build=$1 limit=$2
 shift 2
 here=$(cd "$(dirname "$0")" && pwd)
-# A slow input is a finding after 10 s; 1 GiB in one allocation is a runaway
-# (the inputs are a few KiB). A fixed seed makes each run try the same mutations.
-flags=(-max_total_time="$seconds" -seed=1 -timeout=10 -rss_limit_mb=2560 -malloc_limit_mb=1024 -print_final_stats=1)
+case $limit in
+  seconds=*) stop=(-max_total_time="${limit#seconds=}") replay=0 ;;
+  runs=*) stop=(-runs="${limit#runs=}") replay=1 ;;
+  *) echo "fuzz/run.sh: the second argument is seconds=N or runs=N, not '$limit'" >&2; exit 2 ;;
+esac
+# A slow input is a finding after 10 s; 1 GiB in one allocation is a runaway (the inputs are a few KiB).
+flags=("${stop[@]}" -seed=1 -timeout=10 -rss_limit_mb=2560 -malloc_limit_mb=1024 -print_final_stats=1)
 failed=0
 rows=()
 for target in "$@"; do
   name=${target#fuzz_}
   corpus=$build/fuzz-corpus/$name findings=$build/fuzz-findings/$name log=$build/fuzz-logs/$name.log
+  [[ $replay == 1 ]] && corpus=$(mktemp -d)  # what a replay adds is thrown away
   mkdir -p "$corpus" "$findings" "$(dirname "$log")"
   asan=${ASAN_OPTIONS:-}
   # assimp leaks a few KiB on some broken files (in its STL reader); not recoil's to fix.
@@ -31,6 +39,7 @@ for target in "$@"; do
   execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*$')
   found=$(find "$findings" -type f -newer "$marker" | wc -l)
   rm -f "$marker"
+  [[ $replay == 1 ]] && rm -rf "$corpus"
   if [[ $rc -ne 0 || $found -ne 0 ]]; then
     failed=1
     echo "fuzz: $target failed (exit $rc); log: $log; findings in $findings:" >&2

@@ -86,27 +86,48 @@ void check_ply(const std::string& head, std::uintmax_t file_size, const std::str
   }
 }
 
-void check_off(const std::string& head, std::uintmax_t file_size, const std::string& name) {
-  std::istringstream lines(head);
-  std::vector<std::string> words;
-  std::string line;
-  while (words.size() < 5 && std::getline(lines, line)) {
-    std::istringstream in(line.substr(0, line.find('#')));
-    for (std::string w; in >> w;) words.push_back(w);
-  }
-  const size_t magic = words.empty() ? std::string::npos : words[0].find("OFF");
-  if (magic == std::string::npos) return;
-  // assimp reads a count that follows "OFF" without a space ("OFF8").
-  const size_t tail = magic + 3;
-  if (tail < words[0].size()) {
-    words.insert(words.begin() + 1, words[0].substr(tail));
-    words[0].resize(tail);
-  }
-  // "nOFF" gives a dimension before the counts; binary OFF files store them as integers.
-  const size_t first = words[0].find("nOFF") != std::string::npos ? 2 : 1;
-  if (words.size() > first && words[first] == "BINARY") return;
-  std::uint64_t vertices = 0, faces = 0;
-  if (words.size() < first + 2 || !parse_count(words[first], vertices) || !parse_count(words[first + 1], faces)) return;
+// Mirrors assimp's reading of an OFF header character by character: optional
+// prefix letters [ST][C][N][4][n] (a leading '4' is read as one even before
+// digits), then "OFF" (optional in a file named .off), an optional dimension
+// after 'n', then the vertex and face counts; '#' starts a comment line.
+void check_off(const std::string& head, bool named_off, std::uintmax_t file_size, const std::string& name) {
+  size_t p = 0;
+  const auto skip_blank_and_comments = [&] {
+    while (p < head.size()) {
+      if (std::isspace(static_cast<unsigned char>(head[p]))) {
+        ++p;
+      } else if (head[p] == '#') {
+        p = std::min(head.find('\n', p), head.size());
+      } else {
+        break;
+      }
+    }
+  };
+  const auto take = [&](const char* prefix) {
+    const size_t n = std::char_traits<char>::length(prefix);
+    if (head.compare(p, n, prefix) != 0) return false;
+    p += n;
+    return true;
+  };
+  skip_blank_and_comments();
+  take("ST");
+  take("C");
+  take("N");
+  take("4");
+  const bool has_dimension = take("n");
+  if (!take("OFF") && !named_off) return;
+  const auto next_count = [&](std::uint64_t& value) {
+    skip_blank_and_comments();
+    const size_t word_end = std::min(head.find_first_of(" \t\r\n#", p), head.size());
+    const std::string word = head.substr(p, word_end - p);
+    p = word_end;
+    return parse_count(word, value);
+  };
+  skip_blank_and_comments();
+  if (head.compare(p, 6, "BINARY") == 0) return;  // binary OFF files store the counts as integers
+  std::uint64_t dimension = 0, vertices = 0, faces = 0;
+  if (has_dimension && !next_count(dimension)) return;
+  if (!next_count(vertices) || !next_count(faces)) return;
   // At least "0 0 0\n" per vertex and "0\n" per face.
   const long double needed = 6.0L * static_cast<long double>(vertices) + 2.0L * static_cast<long double>(faces);
   if (needed > static_cast<long double>(file_size))
@@ -115,17 +136,16 @@ void check_off(const std::string& head, std::uintmax_t file_size, const std::str
 
 }  // namespace
 
-void check_declared_mesh_counts(const std::string& head, std::uintmax_t file_size, const std::string& name) {
+void check_declared_mesh_counts(const std::string& head, std::uintmax_t file_size, const std::filesystem::path& path) {
+  const std::string name = path.string();
   // assimp finds the PLY magic after leading blank lines too.
   const size_t text = std::min(head.find_first_not_of(" \t\r\n"), head.size());
   if (lower_case(head.substr(text, 3)) == "ply") {
     check_ply(head.substr(text), file_size, name);
     return;
   }
-  const std::string start = head.substr(0, 16);
-  const size_t off = start.find("OFF");
-  if (off != std::string::npos && start.substr(0, off).find_first_not_of("STCN4n") == std::string::npos)
-    check_off(head, file_size, name);
+  // assimp picks its OFF reader by the file's extension, or by the magic for other names.
+  check_off(head, lower_case(path.extension().string()) == ".off", file_size, name);
 }
 
 }  // namespace recoil::sim

@@ -112,7 +112,7 @@ TriMesh import_surface(const fs::path& path) {
     head.resize(static_cast<size_t>(in.gcount()));
     std::error_code ec;
     const std::uintmax_t size = fs::file_size(path, ec);
-    if (!ec) check_declared_mesh_counts(head, size, path.string());
+    if (!ec) check_declared_mesh_counts(head, size, path);
   }
   Assimp::Importer importer;
   // Only assimp's validation runs: its other post-processing steps assert

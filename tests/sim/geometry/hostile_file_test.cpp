@@ -78,6 +78,8 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   std::ofstream(dir / "huge.ply") << ply_start << "end_header\n0\n";
   std::ofstream(dir / "unended.ply") << ply_start << "0\n";
   std::ofstream(dir / "huge.off") << "OFF\n1000000000 1 0\n0 0 0\n";
+  // assimp reads a .off file without its magic too, and takes a leading '4' for the homogeneous flag.
+  std::ofstream(dir / "bare.off") << "4 900000000 1 0\n0 0 0\n";
   const std::string e1 = test::bad_input_within_a_second([&] { import_surface(dir / "huge.ply"); });
   expect_names(e1, (dir / "huge.ply").string());
   expect_names(e1, "4000000000 vertex");
@@ -85,6 +87,9 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   const std::string e3 = test::bad_input_within_a_second([&] { import_surface(dir / "huge.off"); });
   expect_names(e3, (dir / "huge.off").string());
   expect_names(e3, "1000000000 vertices");
+  const std::string e4 = test::bad_input_within_a_second([&] { import_surface(dir / "bare.off"); });
+  expect_names(e4, (dir / "bare.off").string());
+  expect_names(e4, "900000000 vertices");
 }
 
 }  // namespace
