@@ -7,6 +7,7 @@
 #include <cctype>
 #include <charconv>
 #include <sstream>
+#include <string_view>
 #include <vector>
 
 #include "core/error.h"
@@ -60,8 +61,10 @@ void check_ply(const std::string& head, std::uintmax_t file_size, const std::str
     std::istringstream words(line);
     std::string keyword, a, b;
     words >> keyword >> a >> b;  // b: a list's count type
-    // Only an exact "end_header" at the start of a line: assimp 5.2 hangs on near misses ("end_hEader").
-    ended = keyword == "end_header" && line.rfind("end_header", 0) == 0;
+    // Only "end_header" at the start of a line, then the line's end, a space, tab, CR, form
+    // feed or NUL (assimp 5.2's blanks): it hangs on near misses ("end_hEader", "end_header\v").
+    ended = line.rfind("end_header", 0) == 0 &&
+            (line.size() == 10 || std::string_view(" \t\r\f", 5).find(line[10]) != std::string_view::npos);
     if (keyword == "format") {
       ascii = a == "ascii";
     } else if (keyword == "element") {

@@ -77,6 +77,7 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   const std::string ply_start = "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\n";
   std::ofstream(dir / "huge.ply") << ply_start << "end_header\n0\n";
   std::ofstream(dir / "unended.ply") << ply_start << "0\n";
+  std::ofstream(dir / "vtab.ply") << ply_start << "end_header\v0\n";
   std::ofstream(dir / "huge.off") << "OFF\n1000000000 1 0\n0 0 0\n";
   // assimp reads a .off file without its magic too, and takes a leading '4' for the homogeneous flag.
   std::ofstream(dir / "bare.off") << "4 900000000 1 0\n0 0 0\n";
@@ -84,6 +85,7 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   expect_names(e1, (dir / "huge.ply").string());
   expect_names(e1, "4000000000 vertex");
   expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "unended.ply"); }), "end_header");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "vtab.ply"); }), "end_header");
   const std::string e3 = test::bad_input_within_a_second([&] { import_surface(dir / "huge.off"); });
   expect_names(e3, (dir / "huge.off").string());
   expect_names(e3, "1000000000 vertices");
