@@ -63,7 +63,7 @@ fuzz-build: deps $(FUZZ_BUILD)/CMakeCache.txt
 fuzz: fuzz-build
 	bash fuzz/run.sh $(FUZZ_BUILD) seconds=$(FUZZ_SECONDS) $(FUZZ_TARGETS)
 
-FUZZ_RUNS ?= 20000
+FUZZ_RUNS ?= 50000
 fuzz-smoke: fuzz-build
 	bash fuzz/run.sh $(FUZZ_BUILD) runs=$(FUZZ_RUNS) $(FUZZ_TARGETS)
 
