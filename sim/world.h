@@ -155,6 +155,8 @@ class World {
 
  private:
   void assemble();
+  // P_A^-1 of this step's m_A with every deformable body's rigid modes at m_x.
+  MomentumPreconditioner momentum_preconditioner() const;
   // The contact stage: candidates for the contact-free prediction in m_dv,
   // then the contact solve (m_dv in: contact-free, out: with contacts).
   void collide_and_solve(StepReport& report);
@@ -190,6 +192,7 @@ class World {
   ContactMemory m_memory;                         // warm start for the next step
   Eigen::VectorXd m_x, m_v, m_b, m_dv;
   BlockSparseMatrix m_A;
+  std::optional<MomentumPreconditioner> m_preconditioner;  // of m_A, set with it each step
   std::vector<char> m_fixed;                 // per global node
   std::vector<double> m_energy0, m_energy_scale;  // per dynamic body, for the blow-up check
   std::vector<double> m_elastic;    // per deformable body: elastic energy at the start of the last step (from assembly)

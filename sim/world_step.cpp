@@ -40,7 +40,8 @@ StepReport World::step() {
   // The contact-free solve: the prediction the collision search uses, and
   // the step's answer when there are no candidates.
   t = Clock::now();
-  const PcgResult pcg = solve_pcg(m_A, m_b, m_dv, m_solver);
+  m_preconditioner.emplace(momentum_preconditioner());
+  const PcgResult pcg = solve_pcg(m_A, *m_preconditioner, m_b, m_dv, m_solver);
   report.profile.solve = ms_since(t);
   report.solver_iterations = pcg.iterations;
   report.solver_residual = pcg.relative_residual;
@@ -80,6 +81,20 @@ void World::assemble() {
     m_b.segment<3>(3 * n) = m_dt * body.mass * m_gravity;
   }
   m_A.fix(m_fixed);
+}
+
+MomentumPreconditioner World::momentum_preconditioner() const {
+  std::vector<RigidModeNodes> modes;
+  for (const DeformableBody& body : m_bodies) {
+    RigidModeNodes m;
+    for (int node = body.node_offset; node < body.node_offset + body.num_nodes; ++node) {
+      if (m_fixed[static_cast<size_t>(node)]) continue;
+      m.nodes.push_back(node);
+      m.positions.push_back(m_x.segment<3>(3 * node));
+    }
+    modes.push_back(std::move(m));
+  }
+  return MomentumPreconditioner(m_A, modes);
 }
 
 std::vector<ContactSurface> World::contact_surfaces() const {
@@ -191,6 +206,7 @@ void World::collide_and_solve(StepReport& report) {
   t = Clock::now();
   ContactProblem problem;
   problem.A = &m_A;
+  problem.preconditioner = &*m_preconditioner;
   problem.b = m_b;
   problem.softness = m_contact.softness;
   // Rows linearised at the contact-free prediction (the solver itself starts

@@ -55,6 +55,17 @@ void BlockSparseMatrix::multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) c
   }
 }
 
+void BlockSparseMatrix::multiply_magnitudes(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
+  RECOIL_CHECK(x.size() == rows());
+  y.resize(rows());
+  for (int r = 0; r < m_rows; ++r) {
+    Eigen::Vector3d sum = Eigen::Vector3d::Zero();
+    for (int k = m_row_start[static_cast<size_t>(r)]; k < m_row_start[static_cast<size_t>(r) + 1]; ++k)
+      sum.noalias() += m_blocks[static_cast<size_t>(k)].cwiseAbs() * x.segment<3>(3 * m_cols[static_cast<size_t>(k)]).cwiseAbs();
+    y.segment<3>(3 * r) = sum;
+  }
+}
+
 Eigen::SparseMatrix<double> BlockSparseMatrix::to_eigen() const {
   std::vector<Eigen::Triplet<double>> triplets;
   triplets.reserve(m_blocks.size() * 9);

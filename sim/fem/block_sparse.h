@@ -33,6 +33,8 @@ class BlockSparseMatrix {
 
   // y = A x; x and y have 3 * block_rows() entries.
   void multiply(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
+  // y = |A| |x| entry by entry: the scale of the rounding error of A x.
+  void multiply_magnitudes(const Eigen::VectorXd& x, Eigen::VectorXd& y) const;
 
   Eigen::SparseMatrix<double> to_eigen() const;
 

@@ -1,25 +1,12 @@
 #include "sim/fem/pcg.h"
 
-#include <Eigen/Geometry>
-#include <Eigen/LU>
 #include <cmath>
-#include <vector>
 
 namespace recoil::sim {
 
-PcgResult solve_pcg(const BlockSparseMatrix& A, const Eigen::VectorXd& b, Eigen::VectorXd& x,
-                    const PcgSettings& settings) {
-  const int n = A.block_rows();
-  std::vector<Eigen::Matrix3d> inv(static_cast<size_t>(n));
-  for (int r = 0; r < n; ++r) {
-    const Eigen::Matrix3d& d = A.diagonal_block(r);
-    // A singular diagonal block (cannot happen for SPD A) falls back to identity.
-    inv[static_cast<size_t>(r)] = std::abs(d.determinant()) > 0.0 ? Eigen::Matrix3d(d.inverse()) : Eigen::Matrix3d(Eigen::Matrix3d::Identity());
-  }
-  auto precondition = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
-    out.resize(in.size());
-    for (int r = 0; r < n; ++r) out.segment<3>(3 * r) = inv[static_cast<size_t>(r)] * in.segment<3>(3 * r);
-  };
+PcgResult solve_pcg(const BlockSparseMatrix& A, const MomentumPreconditioner& P, const Eigen::VectorXd& b,
+                    Eigen::VectorXd& x, const PcgSettings& settings) {
+  auto precondition = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) { P.apply(in, out); };
 
   PcgResult result;
   x = Eigen::VectorXd::Zero(b.size());

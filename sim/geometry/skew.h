@@ -1,7 +1,7 @@
 #pragma once
 // The cross-product matrix of a 3-vector, [a]x with [a]x b = a x b, used by
-// the rigid-body pose update, the rigid contact rows and the Neo-Hookean
-// cofactor derivative.
+// the rigid-body pose update, the rigid contact rows, the Neo-Hookean
+// cofactor derivative and the rigid modes of the momentum preconditioner.
 #include <Eigen/Core>
 
 namespace recoil::sim {

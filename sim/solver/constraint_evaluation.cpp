@@ -230,7 +230,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
 // a loaded one could never come on. `proposals` holds the proposing
 // contacts only, in ascending contact order.
 void hold_back_parallel_activations(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
-                                    const std::vector<Eigen::Matrix3d>& inv_diag, bool converged,
+                                    const MomentumPreconditioner& P, bool converged,
                                     std::vector<Proposal>& proposals) {
   std::vector<int> order;  // indices into `proposals`: the activations, deepest first
   std::vector<int> taken;  // contact indices: the normal rows already on
@@ -253,7 +253,7 @@ void hold_back_parallel_activations(const ContactProblem& problem, const std::ve
     for (int t : taken) {
       // The cosine of the two normal rows in the P_A^-1 metric.
       const double w_t = tracks[static_cast<size_t>(t)].w[0];
-      const double product = normal_rows_product(rows, problem.rows[static_cast<size_t>(t)], inv_diag);
+      const double product = normal_rows_product(rows, problem.rows[static_cast<size_t>(t)], P);
       if (w_k > 0.0 && w_t > 0.0 && product > kParallel * std::sqrt(w_k * w_t)) {
         p.accept = false;
         break;
@@ -266,7 +266,7 @@ void hold_back_parallel_activations(const ContactProblem& problem, const std::ve
 }  // namespace
 
 EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
-                                       const std::vector<Eigen::Matrix3d>& inv_diag, double eps2, int max_flips,
+                                       const MomentumPreconditioner& P, double eps2, int max_flips,
                                        bool converged) {
   const int m = static_cast<int>(problem.rows.size());
   const int n = static_cast<int>(y.size()) - 3 * m;
@@ -319,7 +319,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
   // Mode changes only when among the worst (header).
   for (Proposal& p : proposals)
     if (p.mode_change && p.violation < kChangeShare * worst) p.accept = false;
-  hold_back_parallel_activations(problem, tracks, inv_diag, converged, proposals);
+  hold_back_parallel_activations(problem, tracks, P, converged, proposals);
   // Apply the accepted proposals.
   EvaluationChanges changed;
   for (const Proposal& p : proposals) {

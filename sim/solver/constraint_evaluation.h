@@ -67,6 +67,7 @@
 #include <array>
 #include <vector>
 
+#include "sim/fem/momentum_preconditioner.h"
 #include "sim/solver/contact_problem.h"
 
 namespace recoil::sim {
@@ -105,8 +106,8 @@ void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 
 // Evaluates every contact of `problem` at y (#DoF + 3 #contacts); applies
 // the accepted changes to problem.states and to the multipliers in y.
-// inv_diag is P_A^-1, one 3x3 block per node (inverse_diagonal_blocks of
-// problem.A): the metric in which rows count as parallel (below).
+// P is P_A^-1 of problem.A (momentum_preconditioner.h): the metric in which
+// rows count as parallel (below).
 // The worst violations first: each proposed mode change has a violation in
 // m/s (activation: -slack; separation: -lambda w_n; sticking to sliding:
 // (|gamma| - mu_s lambda) w_t; sliding to sticking: the reversed slip
@@ -173,7 +174,7 @@ struct EvaluationChanges {
   int total() const { return mode_changes + friction_updates; }
 };
 EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
-                                       const std::vector<Eigen::Matrix3d>& inv_diag, double eps2, int max_flips,
+                                       const MomentumPreconditioner& P, double eps2, int max_flips,
                                        bool converged);
 
 }  // namespace recoil::sim

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "sim/fem/block_sparse.h"
+#include "sim/fem/momentum_preconditioner.h"
 
 namespace recoil::sim {
 
@@ -84,6 +85,9 @@ struct ContactSoftness {
 
 struct ContactProblem {
   const BlockSparseMatrix* A = nullptr;  // #DoF by #DoF, SPD; fixed nodes are identity rows with b = 0
+  // P_A^-1 of A (momentum_preconditioner.h) with the deformable bodies'
+  // rigid modes; null: the solvers use block Jacobi alone.
+  const MomentumPreconditioner* preconditioner = nullptr;
   Eigen::VectorXd b;                     // #DoF
   std::vector<ContactRows> rows;         // one per contact
   std::vector<ContactState> states;      // same size as rows: in, the warm start; out, the solution
@@ -93,8 +97,8 @@ struct ContactProblem {
 enum class SolverMethod { cr, cr_plain, pgs };
 const char* to_string(SolverMethod method);
 
-// C = diag(P_A, P_S) for `cr`: block_jacobi = 3x3 diagonal blocks of A and
-// diag(J P_A^-1 J^T); contact_blocks = the same P_A with each contact's 3x3
+// C = diag(P_A, P_S) for `cr`: block_jacobi = P_A^-1 of problem.preconditioner
+// (3x3 diagonal blocks of A, plus rigid modes when given) and diag(J P_A^-1 J^T); contact_blocks = the same P_A with each contact's 3x3
 // block J_k P_A^-1 J_k^T on its selected rows; ssor = block SSOR
 // (omega 1.5) for P_A with the contact blocks. Measurements in cr_solver.h.
 enum class CrPreconditioner { block_jacobi, contact_blocks, ssor };

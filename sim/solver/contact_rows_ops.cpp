@@ -1,7 +1,7 @@
 #include "sim/solver/contact_rows_ops.h"
 
-#include <Eigen/LU>
 #include <algorithm>
+#include <array>
 
 #include "core/check.h"
 
@@ -33,34 +33,71 @@ void add_normal_row_transpose_times(const ContactRows& rows, double lambda, Eige
     out.segment<3>(3 * rows.nodes[i]).noalias() += rows.blocks[i].row(0).transpose() * lambda;
 }
 
-std::vector<Eigen::Matrix3d> inverse_diagonal_blocks(const BlockSparseMatrix& A) {
-  std::vector<Eigen::Matrix3d> out(static_cast<size_t>(A.block_rows()));
-  for (int r = 0; r < A.block_rows(); ++r) {
-    const Eigen::Matrix3d& block = A.diagonal_block(r);
-    RECOIL_CHECK(block.determinant() > 0.0, "diagonal block " << r << " of A is not SPD");
-    out[static_cast<size_t>(r)] = block.inverse();
+ProblemPreconditioner::ProblemPreconditioner(const ContactProblem& problem) : m_used(problem.preconditioner) {
+  if (m_used != nullptr) return;
+  RECOIL_CHECK(problem.A != nullptr);
+  m_own.emplace(*problem.A);
+  m_used = &*m_own;
+}
+
+namespace {
+
+// J_k Z_b for each body b whose rigid modes the rows touch (3 by 6, the
+// rows' velocities under each rigid motion), at most two: a contact has two sides.
+struct BodyModeRows {
+  int count = 0;
+  std::array<int, 2> body{};
+  std::array<MomentumPreconditioner::ModeBlock, 2> rows_times_modes;
+};
+
+BodyModeRows rows_times_modes(const ContactRows& rows, const MomentumPreconditioner& P) {
+  BodyModeRows out;
+  for (size_t i = 0; i < rows.nodes.size(); ++i) {
+    const int b = P.body_of(rows.nodes[i]);
+    if (b < 0) continue;
+    int slot = 0;
+    while (slot < out.count && out.body[static_cast<size_t>(slot)] != b) ++slot;
+    if (slot == out.count) {
+      RECOIL_CHECK(out.count < 2, "a contact touches the rigid modes of more than two bodies");
+      out.body[static_cast<size_t>(slot)] = b;
+      out.rows_times_modes[static_cast<size_t>(slot)].setZero();
+      ++out.count;
+    }
+    out.rows_times_modes[static_cast<size_t>(slot)].noalias() += rows.blocks[i] * P.mode_block(rows.nodes[i]);
   }
   return out;
 }
 
-Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag) {
+}  // namespace
+
+Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const MomentumPreconditioner& P) {
   Eigen::Vector3d w = Eigen::Vector3d::Zero();
   for (size_t i = 0; i < rows.nodes.size(); ++i) {
     const Eigen::Matrix3d& J = rows.blocks[i];
-    const Eigen::Matrix3d& P = inv_diag[static_cast<size_t>(rows.nodes[i])];
-    for (int r = 0; r < 3; ++r) w[r] += J.row(r).dot(P * J.row(r).transpose());
+    const Eigen::Matrix3d& D = P.diagonal_inverse(rows.nodes[i]);
+    for (int r = 0; r < 3; ++r) w[r] += J.row(r).dot(D * J.row(r).transpose());
+  }
+  const BodyModeRows modes = rows_times_modes(rows, P);
+  for (size_t slot = 0; slot < static_cast<size_t>(modes.count); ++slot) {
+    const MomentumPreconditioner::ModeBlock& JZ = modes.rows_times_modes[slot];
+    w += (JZ * P.coarse_inverse(modes.body[slot]) * JZ.transpose()).diagonal();
   }
   return w;
 }
 
-Eigen::Matrix3d contact_block(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag) {
+Eigen::Matrix3d contact_block(const ContactRows& rows, const MomentumPreconditioner& P) {
   Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
   for (size_t i = 0; i < rows.nodes.size(); ++i)
-    W.noalias() += rows.blocks[i] * inv_diag[static_cast<size_t>(rows.nodes[i])] * rows.blocks[i].transpose();
+    W.noalias() += rows.blocks[i] * P.diagonal_inverse(rows.nodes[i]) * rows.blocks[i].transpose();
+  const BodyModeRows modes = rows_times_modes(rows, P);
+  for (size_t slot = 0; slot < static_cast<size_t>(modes.count); ++slot) {
+    const MomentumPreconditioner::ModeBlock& JZ = modes.rows_times_modes[slot];
+    W.noalias() += JZ * P.coarse_inverse(modes.body[slot]) * JZ.transpose();
+  }
   return W;
 }
 
-double normal_rows_product(const ContactRows& a, const ContactRows& b, const std::vector<Eigen::Matrix3d>& inv_diag) {
+double normal_rows_product(const ContactRows& a, const ContactRows& b, const MomentumPreconditioner& P) {
   // Node lists are ascending: walk both once.
   double product = 0.0;
   size_t i = 0, j = 0;
@@ -70,11 +107,17 @@ double normal_rows_product(const ContactRows& a, const ContactRows& b, const std
     } else if (b.nodes[j] < a.nodes[i]) {
       ++j;
     } else {
-      product += a.blocks[i].row(0).dot(inv_diag[static_cast<size_t>(a.nodes[i])] * b.blocks[j].row(0).transpose());
+      product += a.blocks[i].row(0).dot(P.diagonal_inverse(a.nodes[i]) * b.blocks[j].row(0).transpose());
       ++i;
       ++j;
     }
   }
+  const BodyModeRows modes_a = rows_times_modes(a, P), modes_b = rows_times_modes(b, P);
+  for (size_t sa = 0; sa < static_cast<size_t>(modes_a.count); ++sa)
+    for (size_t sb = 0; sb < static_cast<size_t>(modes_b.count); ++sb)
+      if (modes_a.body[sa] == modes_b.body[sb])
+        product += modes_a.rows_times_modes[sa].row(0).dot(P.coarse_inverse(modes_a.body[sa]) *
+                                                             modes_b.rows_times_modes[sb].row(0).transpose());
   return product;
 }
 

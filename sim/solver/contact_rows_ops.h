@@ -1,11 +1,13 @@
 #pragma once
 // Small kernels on the per-contact rows of contact_problem.h, shared by the
-// CR solver, the PGS baseline and the KKT residual: J_k dv, J_k^T f, the
-// block-Jacobi inverse of A and the per-row effective inverse mass
-// diag(J P_A^-1 J^T) that turns an impulse (N s) into a velocity (m/s).
+// CR solver, the PGS baseline and the KKT residual: J_k dv, J_k^T f, and
+// the per-row effective inverse mass diag(J P_A^-1 J^T) that turns an
+// impulse (N s) into a velocity (m/s), P_A^-1 as in momentum_preconditioner.h.
 #include <Eigen/Core>
+#include <optional>
 #include <vector>
 
+#include "sim/fem/momentum_preconditioner.h"
 #include "sim/solver/contact_problem.h"
 
 namespace recoil::sim {
@@ -25,21 +27,33 @@ void add_rows_transpose_times(const ContactRows& rows, const Eigen::Vector3d& f,
 double normal_row_times(const ContactRows& rows, const Eigen::VectorXd& dv);
 void add_normal_row_transpose_times(const ContactRows& rows, double lambda, Eigen::VectorXd& out);
 
-// The inverted 3x3 diagonal blocks of A, one per node (P_A^-1 of the preconditioner, cr_solver.h).
-std::vector<Eigen::Matrix3d> inverse_diagonal_blocks(const BlockSparseMatrix& A);
+// The P_A^-1 a solver of `problem` uses: problem.preconditioner, or block
+// Jacobi of problem.A (owned here) when that is null. Neither copied nor moved.
+class ProblemPreconditioner {
+ public:
+  explicit ProblemPreconditioner(const ContactProblem& problem);
+  ProblemPreconditioner(const ProblemPreconditioner&) = delete;
+  ProblemPreconditioner& operator=(const ProblemPreconditioner&) = delete;
+  const MomentumPreconditioner& get() const { return *m_used; }
+
+ private:
+  std::optional<MomentumPreconditioner> m_own;
+  const MomentumPreconditioner* m_used;
+};
 
 // diag(J_k P_A^-1 J_k^T) for the three rows of one contact, 1/kg. A row that
 // touches no free DoF gets 0.
-Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag);
+Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const MomentumPreconditioner& P);
 
 // J_k P_A^-1 J_k^T: the contact's 3x3 block of the Delassus operator with
-// A replaced by its block diagonal, 1/kg (its diagonal is effective_inverse_mass).
-Eigen::Matrix3d contact_block(const ContactRows& rows, const std::vector<Eigen::Matrix3d>& inv_diag);
+// A^-1 replaced by P_A^-1, 1/kg (its diagonal is effective_inverse_mass).
+Eigen::Matrix3d contact_block(const ContactRows& rows, const MomentumPreconditioner& P);
 
 // J_a,n P_A^-1 J_b,n^T: the coupling of two contacts' normal rows through
-// the DoF nodes they share, 1/kg (0 when they share none; for a = b it is
+// the DoF nodes they share and the rigid motions of the bodies they both
+// touch, 1/kg (0 when they share neither; for a = b it is
 // effective_inverse_mass(a)[0]).
-double normal_rows_product(const ContactRows& a, const ContactRows& b, const std::vector<Eigen::Matrix3d>& inv_diag);
+double normal_rows_product(const ContactRows& a, const ContactRows& b, const MomentumPreconditioner& P);
 
 // The friction impulse (t1, t2) that `state` applies: gamma when sticking,
 // -mu_kinetic lambda' slip when sliding, 0 when inactive.

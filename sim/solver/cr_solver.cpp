@@ -34,9 +34,9 @@ class CrSolver {
            ContactLinearization* linearization, ContactSolverStats& stats)
       : m_problem(problem), m_settings(settings), m_preconditioned(preconditioned),
         m_linearization(linearization), m_stats(stats), m_n(problem.A->rows()),
-        m_inv_diag(inverse_diagonal_blocks(*problem.A)) {
+        m_P(problem) {
     if (preconditioned && settings.preconditioner == CrPreconditioner::ssor)
-      m_ssor = std::make_unique<BlockSsor>(*problem.A, m_inv_diag);
+      m_ssor = std::make_unique<BlockSsor>(*problem.A, m_P.get().diagonal_inverses());
   }
 
   void run(Eigen::VectorXd& dv);
@@ -81,8 +81,9 @@ class CrSolver {
   ContactLinearization* m_linearization;
   ContactSolverStats& m_stats;
   int m_n;
-  mutable Eigen::VectorXd m_scratch_dv, m_scratch_top;  // apply_B's work space, #DoF
-  std::vector<Eigen::Matrix3d> m_inv_diag;  // P_A^-1, one per node
+  mutable Eigen::VectorXd m_scratch_dv, m_scratch_top;  // apply_B's (and the rounding floor's) work space, #DoF
+  mutable Eigen::VectorXd m_scratch_velocity;           // scaled_square_sum's P_A^-1 r, #DoF
+  ProblemPreconditioner m_P;  // P_A^-1 (momentum_preconditioner.h)
   std::unique_ptr<BlockSsor> m_ssor;           // P_A^-1 when settings.preconditioner == ssor
   std::vector<ContactTrack> m_tracks;
   std::vector<Eigen::Matrix3d> m_contact_inv;  // (J_k P_A^-1 J_k^T)^-1 per contact (zero: use the diagonal)
@@ -92,6 +93,12 @@ class CrSolver {
   // the row by (1 when selected, its effective inverse mass w otherwise), and
   // what P_S^-1 divides it by (w when selected, 1 otherwise).
   Eigen::VectorXd m_row_scale, m_row_divisor;
+  // What rounding alone leaves in m_r's momentum rows, m/s: eps (|A| |dv| +
+  // |d|) through P_A^-1, set with each explicit residual. A stiff body's
+  // A dv cancels terms of h^2 k |dv| down to m dv, so at E = 1e12 Pa and
+  // dt = 0.1 s no iterate gets below about 1e-6 m/s; the solve counts as
+  // converged at this floor when it lies above epsilon_1.
+  double m_rounding_floor = 0.0;
   bool m_residual_norm_known = false;  // m_residual_norm / m_residual_inf describe m_r
   double m_residual_norm = 0.0, m_residual_inf = 0.0;
   double m_rho = 0.0;
@@ -154,9 +161,9 @@ void CrSolver::refresh_rows() {
   m_contact_inv.assign(blocks ? static_cast<size_t>(contacts()) : 0, Eigen::Matrix3d::Zero());
   for (int k = 0; k < contacts(); ++k) {
     const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
-    m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(rows, m_inv_diag);
+    m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(rows, m_P.get());
     if (!blocks) continue;
-    const Eigen::Matrix3d W = contact_block(rows, m_inv_diag) + Eigen::Matrix3d(compliance(k).asDiagonal());
+    const Eigen::Matrix3d W = contact_block(rows, m_P.get()) + Eigen::Matrix3d(compliance(k).asDiagonal());
     // Only a well-conditioned block is inverted; the diagonal serves otherwise.
     if (W.trace() > 0.0 && W.determinant() > 1e-12 * std::pow(W.trace() / 3.0, 3))
       m_contact_inv[static_cast<size_t>(k)] = W.inverse();
@@ -219,24 +226,23 @@ void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   out.head(m_n) = top;
 }
 
-// C = diag(P_A, P_S): P_A the block diagonal of A
+// C = diag(P_A, P_S): P_A^-1 of momentum_preconditioner.h
 // (or block SSOR), P_S = J P_A^-1 J^T on selected rows, per row or per
 // contact block (cr_solver.h), 1 on the others (whose B entry is -1). With
-// block SSOR for P_A, P_S still uses the block diagonal: J M^-1 J^T has no
-// cheap form, and the diagonal is what the scaled residual uses too.
+// block SSOR for P_A, P_S still uses momentum_preconditioner.h's P_A^-1:
+// J M^-1 J^T has no cheap form, and that is what the scaled residual uses too.
 void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   out.resize(x.size());
   if (!m_preconditioned) {
     out = x;
     return;
   }
-  if (m_ssor) {
-    Eigen::VectorXd top;
+  Eigen::VectorXd top;
+  if (m_ssor)
     m_ssor->apply(x.head(m_n), top);
-    out.head(m_n) = top;
-  } else {
-    for (int i = 0; i < m_n / 3; ++i) out.segment<3>(3 * i) = m_inv_diag[static_cast<size_t>(i)] * x.segment<3>(3 * i);
-  }
+  else
+    m_P.get().apply(x.head(m_n), top);
+  out.head(m_n) = top;
   for (int k = 0; k < contacts(); ++k) {
     const int base = m_n + 3 * k;
     if (tangent_on(k) && !m_contact_inv.empty() && m_contact_inv[static_cast<size_t>(k)](0, 0) != 0.0) {
@@ -257,8 +263,9 @@ double CrSolver::scaled_square_sum(const Eigen::VectorXd& r, double stop_above, 
   RECOIL_CHECK(m_row_scale.size() == 3 * contacts(), "row factors out of step with the contacts");
   double sum = 0.0;
   constraint_inf = 0.0;
+  m_P.get().apply(r.head(m_n), m_scratch_velocity);
   for (int i = 0; i < m_n / 3; ++i) {
-    sum += (m_inv_diag[static_cast<size_t>(i)] * r.segment<3>(3 * i)).squaredNorm();
+    sum += m_scratch_velocity.segment<3>(3 * i).squaredNorm();
     if (sum > stop_above) return sum;
   }
   for (int i = 0; i < 3 * contacts(); ++i) {
@@ -290,6 +297,10 @@ void CrSolver::recompute_residual() {
   m_r = m_d - m_r;
   m_residual_norm_known = false;
   m_residual_true = true;
+  m_problem.A->multiply_magnitudes(m_y.head(m_n), m_scratch_dv);
+  m_scratch_dv = std::numeric_limits<double>::epsilon() * (m_scratch_dv + m_d.head(m_n).cwiseAbs());
+  m_P.get().apply(m_scratch_dv, m_scratch_velocity);
+  m_rounding_floor = m_scratch_velocity.norm();
 }
 
 void CrSolver::update_stationary() {
@@ -391,7 +402,7 @@ bool CrSolver::step() {
     const double decades = res > m_settings.tolerance ? std::log10(res / m_settings.tolerance) : 0.0;
     const int interval = std::max(1, static_cast<int>(std::floor(decades * decades / 2.0)));
     if (m_since_restart % interval == 0 &&
-        evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, m_settings.constraint_tolerance, m_settings.max_flips, false)
+        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), m_settings.constraint_tolerance, m_settings.max_flips, false)
                 .total() > 0) {
       restart_after_change(KrylovStart::contact_switch);
       return false;
@@ -434,7 +445,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   const bool meets_laws = remember_if_best() <= eps2;
   if (!meets_laws) {
     const EvaluationChanges changes =
-        evaluate_constraints(m_problem, m_tracks, m_y, m_inv_diag, eps2, m_settings.max_flips, true);
+        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), eps2, m_settings.max_flips, true);
     if (changes.total() > 0) {
       restart_after_change(changes.mode_changes > 0 ? KrylovStart::mode_change : KrylovStart::friction_update);
       return Finish::go_on;
@@ -477,7 +488,7 @@ double CrSolver::kkt_of(const Eigen::VectorXd& y, const std::vector<ContactState
     if (filled[k].mode != ContactMode::inactive) take_multipliers(y, m_n, static_cast<int>(k), filled[k]);
   }
   std::swap(filled, m_problem.states);
-  const double kkt = kkt_residual(m_problem, y.head(m_n), m_inv_diag).max();
+  const double kkt = kkt_residual(m_problem, y.head(m_n), m_P.get()).max();
   std::swap(filled, m_problem.states);
   return kkt;
 }
@@ -533,7 +544,8 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   while (!out_of_budget()) {
     double constraint_inf = 0.0;
     const double res = residual_norm(constraint_inf);
-    const bool small = res < m_settings.tolerance && (!m_residual_true || constraint_inf < m_settings.constraint_tolerance);
+    const bool small = res < std::max(m_settings.tolerance, m_rounding_floor) &&
+                       (!m_residual_true || constraint_inf < m_settings.constraint_tolerance);
     if (small || m_stationary) {
       const Finish finish = finish_or_continue();
       if (finish == Finish::go_on) continue;

@@ -24,16 +24,15 @@ double sliding_violation(const ContactRows& rows, const ContactState& s, const E
 }  // namespace
 
 KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv) {
-  RECOIL_CHECK(problem.A != nullptr);
-  return kkt_residual(problem, dv, inverse_diagonal_blocks(*problem.A));
+  const ProblemPreconditioner P(problem);
+  return kkt_residual(problem, dv, P.get());
 }
 
-KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv,
-                         const std::vector<Eigen::Matrix3d>& inv_diag) {
+KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv, const MomentumPreconditioner& P) {
   RECOIL_CHECK(problem.A != nullptr && problem.rows.size() == problem.states.size());
   const BlockSparseMatrix& A = *problem.A;
   RECOIL_CHECK(dv.size() == A.rows() && problem.b.size() == A.rows());
-  RECOIL_CHECK(static_cast<int>(inv_diag.size()) == A.block_rows());
+  RECOIL_CHECK(static_cast<int>(P.diagonal_inverses().size()) == A.block_rows());
 
   KktResidual out;
   Eigen::VectorXd g;
@@ -42,7 +41,7 @@ KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& d
   for (size_t k = 0; k < problem.rows.size(); ++k) {
     const ContactRows& rows = problem.rows[k];
     const ContactState& s = problem.states[k];
-    const Eigen::Vector3d w = effective_inverse_mass(rows, inv_diag);
+    const Eigen::Vector3d w = effective_inverse_mass(rows, P);
     const double w_t = std::max(w[1], w[2]);
     const Eigen::Vector3d jdv = rows_times(rows, dv);
     // An active contact's rows yield by their compliance (ContactSoftness).
@@ -64,8 +63,9 @@ KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& d
       out.friction = std::max(out.friction, sliding_violation(rows, s, u, w_t));
     }
   }
-  for (int r = 0; r < A.block_rows(); ++r)
-    out.momentum = std::max(out.momentum, (inv_diag[static_cast<size_t>(r)] * g.segment<3>(3 * r)).lpNorm<Eigen::Infinity>());
+  Eigen::VectorXd velocity_error;
+  P.apply(g, velocity_error);
+  out.momentum = velocity_error.lpNorm<Eigen::Infinity>();
   return out;
 }
 

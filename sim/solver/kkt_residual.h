@@ -1,11 +1,10 @@
 #pragma once
 // One accuracy measure for every contact solver (cr, cr_plain, pgs), so that
 // benchmarks compare them at the same accuracy. Every term is a velocity in
-// m/s: momentum errors are scaled by the block-Jacobi inverse of A, impulse
-// errors by the row's effective inverse mass diag(J P_A^-1 J^T).
+// m/s: momentum errors are scaled by P_A^-1 (momentum_preconditioner.h),
+// impulse errors by the row's effective inverse mass diag(J P_A^-1 J^T).
 #include <Eigen/Core>
-#include <vector>
-
+#include "sim/fem/momentum_preconditioner.h"
 #include "sim/solver/contact_problem.h"
 
 namespace recoil::sim {
@@ -19,10 +18,9 @@ struct KktResidual {
 };
 
 // dv: #DoF; problem.states hold the multipliers (as the solvers leave them).
+// P_A^-1 is problem.preconditioner, or block Jacobi when it is null.
 KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv);
-// The same with P_A^-1 (inverse_diagonal_blocks of problem.A) given, for a
-// caller that measures many iterates of one problem.
-KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv,
-                         const std::vector<Eigen::Matrix3d>& inv_diag);
+// The same with P_A^-1 given, for a caller that measures many iterates of one problem.
+KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& dv, const MomentumPreconditioner& P);
 
 }  // namespace recoil::sim

@@ -17,11 +17,10 @@ class PgsSolver {
   PgsSolver(ContactProblem& problem, const ContactSolverSettings& settings, ContactLinearization* linearization,
             ContactSolverStats& stats)
       : m_problem(problem), m_settings(settings), m_linearization(linearization), m_stats(stats),
-        m_n(problem.A->rows()) {
+        m_n(problem.A->rows()), m_P(problem) {
     m_ldlt.compute(problem.A->to_eigen());
     RECOIL_CHECK(m_ldlt.info() == Eigen::Success, "A is not SPD");
     m_dv_free = m_ldlt.solve(problem.b);
-    m_inv_diag = inverse_diagonal_blocks(*problem.A);
   }
 
   void run(Eigen::VectorXd& dv);
@@ -39,7 +38,7 @@ class PgsSolver {
   int m_n;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_ldlt;
   Eigen::VectorXd m_dv_free;  // A^-1 b
-  std::vector<Eigen::Matrix3d> m_inv_diag;  // P_A^-1: the metric of the rows' compliance
+  ProblemPreconditioner m_P;  // P_A^-1: the metric of the rows' compliance
   std::vector<Eigen::Vector3d> m_compliance;  // per contact, 1/kg (ContactSoftness), set with the operator
   Eigen::MatrixXd m_G;        // #DoF by 3 #contacts: A^-1 J^T
   Eigen::MatrixXd m_W;        // 3 #contacts square: J A^-1 J^T
@@ -64,7 +63,7 @@ void PgsSolver::build_operator() {
   m_compliance.resize(static_cast<size_t>(m));
   for (int k = 0; k < m; ++k)
     m_compliance[static_cast<size_t>(k)] =
-        m_problem.softness.compliance(effective_inverse_mass(m_problem.rows[static_cast<size_t>(k)], m_inv_diag));
+        m_problem.softness.compliance(effective_inverse_mass(m_problem.rows[static_cast<size_t>(k)], m_P.get()));
   m_u.resize(3 * m);
   for (int k = 0; k < m; ++k) m_u.segment<3>(3 * k) = rows_times(m_problem.rows[static_cast<size_t>(k)], m_dv_free);
   m_u.noalias() += m_W * m_f;

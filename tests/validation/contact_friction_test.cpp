@@ -1,5 +1,6 @@
 // Friction validation checks: incline stick and slide (rigid box and
-// deformable block), slide to stop, cone isotropy, rolling sphere.
+// deformable block), slide to stop (rigid, and deformable from soft to
+// nearly rigid), cone isotropy, rolling sphere.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -98,6 +99,42 @@ TEST(ContactValidation, SlideToStopAndConeIsotropy) {
   EXPECT_LT(iso, 0.01);
   EXPECT_LT(creep_x, 1e-4);
   EXPECT_LT(creep_d, 1e-4);
+}
+
+// A deformable block launched on flat ground stops where a rigid one does,
+// however stiff: at E = 1e12 Pa the step matrix's diagonal is h^2 k, 1e4
+// times the mass at dt = 2 ms, and the block's rigid motion must still
+// answer to friction and gravity like its mass (momentum_preconditioner.h).
+// Also at dt = 0.1 s, where it once never landed and slid on at v0.
+TEST(ContactValidation, StiffDeformableBlockSlidesToStop) {
+  const double v0 = 2.0, mu = 0.5;
+  for (const double dt : {0.002, 0.1}) {
+    for (const double youngs_modulus : {1e6, 1e9, 1e12}) {
+      WorldDesc w = base_world(dt);
+      w.planes.push_back(ground(friction(mu, mu)));
+      DeformableBodyDesc b = soft_box("block", Eigen::Vector3d::Constant(0.1), 2, jelly(youngs_modulus),
+                                      Eigen::Vector3d(0.0, 0.0501, 0.0), friction(mu, mu));
+      b.velocity = Eigen::Vector3d(v0, 0.0, 0.0);
+      w.bodies.push_back(b);
+      World world(w);
+      const Eigen::Vector3d c0 = motion(world, 0).center;
+      run(world, steps(v0 / (mu * g) + 0.2, dt));
+      const Eigen::Vector3d stop = motion(world, 0).center;
+      const double speed = motion(world, 0).velocity.norm();
+      run(world, steps(0.5, dt));
+      const double creep = (motion(world, 0).center - stop).norm();
+      // Implicit Euler takes h v0 / 2 off the distance (v_{n+1} = v_n - mu g h, x += h v_{n+1}).
+      const double expected = v0 * v0 / (2.0 * mu * g) - 0.5 * dt * v0;
+      const double err = std::abs((stop - c0).x() - expected) / expected;
+      std::cout << "stiff block, E " << youngs_modulus << " Pa, dt " << dt << " s: slid " << (stop - c0).x()
+                << " m, expected " << expected << ", relative error " << err << "; speed after " << speed
+                << " m/s, creep " << creep * 1e3 << " mm, height " << stop.y() << " m\n";
+      EXPECT_LT(err, 0.03) << youngs_modulus << " Pa, dt " << dt;
+      EXPECT_LT(speed, 1e-3) << youngs_modulus << " Pa, dt " << dt;
+      EXPECT_LT(creep, 1e-4) << youngs_modulus << " Pa, dt " << dt;
+      EXPECT_NEAR(stop.y(), 0.05, 0.002) << youngs_modulus << " Pa, dt " << dt;  // landed, resting on its face
+    }
+  }
 }
 
 // A faceted sphere (2562 vertices) rolls without slipping. Its pivot

@@ -3,6 +3,7 @@
 // (constraint_evaluation.h); rows at an angle all at once.
 #include <gtest/gtest.h>
 
+#include <optional>
 #include <vector>
 
 #include "sim/solver/constraint_evaluation.h"
@@ -22,7 +23,7 @@ constexpr int kMaxFlips = 8;
 struct PointWithThreeContacts {
   OwnedProblem owned;
   std::vector<ContactTrack> tracks;
-  std::vector<Eigen::Matrix3d> inv_diag;
+  std::optional<MomentumPreconditioner> P;
   Eigen::VectorXd y;
 
   explicit PointWithThreeContacts(const Eigen::Vector3d& second) {
@@ -32,14 +33,14 @@ struct PointWithThreeContacts {
     add_contact(owned.problem, {0}, {1.0}, Eigen::Vector3d(0.0, 0.0, 1.0), 0.020, 0.5, 0.5);
     add_contact(owned.problem, {0}, {1.0}, second.normalized(), 0.019, 0.5, 0.5);
     add_contact(owned.problem, {0}, {1.0}, Eigen::Vector3d(1.0, 0.0, 0.0), 0.0195, 0.5, 0.5);
-    inv_diag = inverse_diagonal_blocks(*owned.A);
+    P.emplace(*owned.A);
     tracks.resize(3);
-    for (size_t k = 0; k < 3; ++k) tracks[k].w = effective_inverse_mass(owned.problem.rows[k], inv_diag);
+    for (size_t k = 0; k < 3; ++k) tracks[k].w = effective_inverse_mass(owned.problem.rows[k], *P);
     y = Eigen::VectorXd::Zero(3 + 3 * 3);
   }
   bool active(int k) const { return owned.problem.states[static_cast<size_t>(k)].mode != ContactMode::inactive; }
   int evaluate(bool converged) {
-    return evaluate_constraints(owned.problem, tracks, y, inv_diag, kEps2, kMaxFlips, converged).total();
+    return evaluate_constraints(owned.problem, tracks, y, *P, kEps2, kMaxFlips, converged).total();
   }
 };
 

@@ -1,0 +1,118 @@
+#include "sim/fem/momentum_preconditioner.h"
+
+#include <Eigen/Eigenvalues>
+#include <Eigen/LU>
+#include <cmath>
+
+#include "core/check.h"
+#include "sim/geometry/skew.h"
+
+namespace recoil::sim {
+
+namespace {
+
+// Eigenvalues of Z^T A Z below this share of the largest are dropped from
+// its inverse: a body whose free nodes are collinear has no rotation about
+// that line, and Z^T A Z is singular there.
+constexpr double kCoarseCutoff = 1e-12;
+
+// The symmetric pseudo-inverse of an SPD (or PSD) 6x6 matrix.
+MomentumPreconditioner::CoarseMatrix pseudo_inverse(const MomentumPreconditioner::CoarseMatrix& S) {
+  const Eigen::SelfAdjointEigenSolver<MomentumPreconditioner::CoarseMatrix> eig(S);
+  const Eigen::Matrix<double, 6, 1>& values = eig.eigenvalues();  // ascending
+  Eigen::Matrix<double, 6, 1> inverse = Eigen::Matrix<double, 6, 1>::Zero();
+  for (int i = 0; i < 6; ++i)
+    if (values[i] > kCoarseCutoff * values[5]) inverse[i] = 1.0 / values[i];
+  return eig.eigenvectors() * inverse.asDiagonal() * eig.eigenvectors().transpose();
+}
+
+}  // namespace
+
+MomentumPreconditioner::MomentumPreconditioner(const BlockSparseMatrix& A, const std::vector<RigidModeNodes>& bodies) {
+  const int n = A.block_rows();
+  m_inv_diag.resize(static_cast<size_t>(n));
+  bool all_spd = true;
+  for (int r = 0; r < n; ++r) {
+    // A block that is not SPD comes only from a state gone non-finite, which
+    // the step's health check reports: identity lets that step finish.
+    const Eigen::Matrix3d& block = A.diagonal_block(r);
+    const bool spd = block.determinant() > 0.0;
+    all_spd = all_spd && spd;
+    m_inv_diag[static_cast<size_t>(r)] = spd ? Eigen::Matrix3d(block.inverse()) : Eigen::Matrix3d(Eigen::Matrix3d::Identity());
+  }
+  if (bodies.empty() || !all_spd) return;
+
+  // Arms from each body's centroid, divided by the body's RMS arm so that
+  // both halves of Z are dimensionless and Z^T A Z is in kg throughout.
+  m_body_of_node.assign(static_cast<size_t>(n), -1);
+  m_arm.assign(static_cast<size_t>(n), Eigen::Vector3d::Zero());
+  for (size_t b = 0; b < bodies.size(); ++b) {
+    const RigidModeNodes& body = bodies[b];
+    RECOIL_CHECK(body.nodes.size() == body.positions.size(), "one position per rigid-mode node");
+    RigidModeNodes kept;
+    kept.nodes = body.nodes;
+    m_bodies.push_back(kept);
+    if (body.nodes.empty()) continue;
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& x : body.positions) centroid += x;
+    centroid /= static_cast<double>(body.positions.size());
+    double square_sum = 0.0;
+    for (const Eigen::Vector3d& x : body.positions) square_sum += (x - centroid).squaredNorm();
+    const double scale = std::sqrt(square_sum / static_cast<double>(body.positions.size()));
+    for (size_t i = 0; i < body.nodes.size(); ++i) {
+      const int node = body.nodes[i];
+      RECOIL_CHECK(node >= 0 && node < n && m_body_of_node[static_cast<size_t>(node)] < 0,
+                   "rigid-mode node " << node << " out of range or in two bodies");
+      m_body_of_node[static_cast<size_t>(node)] = static_cast<int>(b);
+      m_arm[static_cast<size_t>(node)] = scale > 0.0 ? Eigen::Vector3d((body.positions[i] - centroid) / scale) : Eigen::Vector3d::Zero();
+    }
+  }
+
+  // Z^T A Z for every body at once from six products with A: column j of
+  // every body's Z stacked into one vector (A couples no two bodies).
+  std::vector<CoarseMatrix> coarse(m_bodies.size(), CoarseMatrix::Zero());
+  Eigen::VectorXd column(A.rows()), product;
+  for (int j = 0; j < 6; ++j) {
+    column.setZero();
+    for (int node = 0; node < n; ++node)
+      if (m_body_of_node[static_cast<size_t>(node)] >= 0) column.segment<3>(3 * node) = mode_block(node).col(j);
+    A.multiply(column, product);
+    for (int node = 0; node < n; ++node) {
+      const int b = m_body_of_node[static_cast<size_t>(node)];
+      if (b >= 0) coarse[static_cast<size_t>(b)].col(j) += mode_block(node).transpose() * product.segment<3>(3 * node);
+    }
+  }
+  m_coarse_inverse.reserve(coarse.size());
+  for (CoarseMatrix& S : coarse) {
+    const CoarseMatrix symmetric = 0.5 * (S + S.transpose());
+    m_coarse_inverse.push_back(pseudo_inverse(symmetric));
+  }
+}
+
+MomentumPreconditioner::ModeBlock MomentumPreconditioner::mode_block(int node) const {
+  ModeBlock Z;
+  Z.leftCols<3>().setIdentity();
+  Z.rightCols<3>() = -skew(m_arm[static_cast<size_t>(node)]);
+  return Z;
+}
+
+void MomentumPreconditioner::apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+  const int n = static_cast<int>(m_inv_diag.size());
+  RECOIL_CHECK(x.size() == 3 * n, "P_A^-1 applied to a vector of the wrong size");
+  out.resize(x.size());
+  for (int r = 0; r < n; ++r) out.segment<3>(3 * r) = m_inv_diag[static_cast<size_t>(r)] * x.segment<3>(3 * r);
+  for (size_t b = 0; b < m_bodies.size(); ++b) {
+    // Z^T x = (sum x_i, sum arm_i x x_i), then out_i += Z_i S^-1 Z^T x.
+    Eigen::Matrix<double, 6, 1> moment = Eigen::Matrix<double, 6, 1>::Zero();
+    for (int node : m_bodies[b].nodes) {
+      const Eigen::Vector3d xi = x.segment<3>(3 * node);
+      moment.head<3>() += xi;
+      moment.tail<3>() += m_arm[static_cast<size_t>(node)].cross(xi);
+    }
+    const Eigen::Matrix<double, 6, 1> c = m_coarse_inverse[b] * moment;
+    for (int node : m_bodies[b].nodes)
+      out.segment<3>(3 * node) += c.head<3>() + c.tail<3>().cross(m_arm[static_cast<size_t>(node)]);
+  }
+}
+
+}  // namespace recoil::sim
