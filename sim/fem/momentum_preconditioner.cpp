@@ -49,9 +49,7 @@ MomentumPreconditioner::MomentumPreconditioner(const BlockSparseMatrix& A, const
   for (size_t b = 0; b < bodies.size(); ++b) {
     const RigidModeNodes& body = bodies[b];
     RECOIL_CHECK(body.nodes.size() == body.positions.size(), "one position per rigid-mode node");
-    RigidModeNodes kept;
-    kept.nodes = body.nodes;
-    m_bodies.push_back(kept);
+    m_body_nodes.push_back(body.nodes);
     if (body.nodes.empty()) continue;
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     for (const Eigen::Vector3d& x : body.positions) centroid += x;
@@ -70,7 +68,7 @@ MomentumPreconditioner::MomentumPreconditioner(const BlockSparseMatrix& A, const
 
   // Z^T A Z for every body at once from six products with A: column j of
   // every body's Z stacked into one vector (A couples no two bodies).
-  std::vector<CoarseMatrix> coarse(m_bodies.size(), CoarseMatrix::Zero());
+  std::vector<CoarseMatrix> coarse(bodies.size(), CoarseMatrix::Zero());
   Eigen::VectorXd column(A.rows()), product;
   for (int j = 0; j < 6; ++j) {
     column.setZero();
@@ -96,23 +94,50 @@ MomentumPreconditioner::ModeBlock MomentumPreconditioner::mode_block(int node) c
   return Z;
 }
 
-void MomentumPreconditioner::apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
+std::vector<MomentumPreconditioner::CoarseVector> MomentumPreconditioner::coarse_solution(const Vector& x) const {
+  // Z^T x = (sum x_i, sum arm_i x x_i) per body, then S^-1 of it.
+  std::vector<CoarseVector> c(m_coarse_inverse.size());
+  for (size_t b = 0; b < c.size(); ++b) {
+    Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
+    for (int node : m_body_nodes[b]) {
+      const Eigen::Vector3d xi = x.segment<3>(3 * node);
+      force += xi;
+      torque += m_arm[static_cast<size_t>(node)].cross(xi);
+    }
+    CoarseVector moment;
+    moment << force, torque;
+    c[b] = m_coarse_inverse[b] * moment;
+  }
+  return c;
+}
+
+void MomentumPreconditioner::apply(const Vector& x, Eigen::VectorXd& out) const {
   const int n = static_cast<int>(m_inv_diag.size());
   RECOIL_CHECK(x.size() == 3 * n, "P_A^-1 applied to a vector of the wrong size");
   out.resize(x.size());
-  for (int r = 0; r < n; ++r) out.segment<3>(3 * r) = m_inv_diag[static_cast<size_t>(r)] * x.segment<3>(3 * r);
-  for (size_t b = 0; b < m_bodies.size(); ++b) {
-    // Z^T x = (sum x_i, sum arm_i x x_i), then out_i += Z_i S^-1 Z^T x.
-    Eigen::Matrix<double, 6, 1> moment = Eigen::Matrix<double, 6, 1>::Zero();
-    for (int node : m_bodies[b].nodes) {
-      const Eigen::Vector3d xi = x.segment<3>(3 * node);
-      moment.head<3>() += xi;
-      moment.tail<3>() += m_arm[static_cast<size_t>(node)].cross(xi);
-    }
-    const Eigen::Matrix<double, 6, 1> c = m_coarse_inverse[b] * moment;
-    for (int node : m_bodies[b].nodes)
-      out.segment<3>(3 * node) += c.head<3>() + c.tail<3>().cross(m_arm[static_cast<size_t>(node)]);
+  for (int node = 0; node < n; ++node) out.segment<3>(3 * node) = m_inv_diag[static_cast<size_t>(node)] * x.segment<3>(3 * node);
+  const std::vector<CoarseVector> c = coarse_solution(x);
+  for (size_t b = 0; b < c.size(); ++b) {
+    const Eigen::Vector3d translation = c[b].head<3>(), rotation = c[b].tail<3>();
+    for (int node : m_body_nodes[b]) out.segment<3>(3 * node) += translation + rotation.cross(m_arm[static_cast<size_t>(node)]);
   }
+}
+
+double MomentumPreconditioner::applied_squared_norm(const Vector& x, double stop_above) const {
+  const int n = static_cast<int>(m_inv_diag.size());
+  RECOIL_CHECK(x.size() == 3 * n, "P_A^-1 applied to a vector of the wrong size");
+  const std::vector<CoarseVector> c = coarse_solution(x);
+  const bool coarse = !m_body_of_node.empty();
+  double sum = 0.0;
+  for (int node = 0; node < n; ++node) {
+    const size_t i = static_cast<size_t>(node);
+    Eigen::Vector3d v = m_inv_diag[i] * x.segment<3>(3 * node);
+    const int b = coarse ? m_body_of_node[i] : -1;
+    if (b >= 0) v += c[static_cast<size_t>(b)].head<3>() + c[static_cast<size_t>(b)].tail<3>().cross(m_arm[i]);
+    sum += v.squaredNorm();
+    if (sum > stop_above) return sum;
+  }
+  return sum;
 }
 
 }  // namespace recoil::sim

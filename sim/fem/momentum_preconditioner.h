@@ -25,13 +25,18 @@ class MomentumPreconditioner {
  public:
   using ModeBlock = Eigen::Matrix<double, 3, 6>;  // Z restricted to one node: [I, -[arm]x]
   using CoarseMatrix = Eigen::Matrix<double, 6, 6>;
+  using CoarseVector = Eigen::Matrix<double, 6, 1>;
+  using Vector = Eigen::Ref<const Eigen::VectorXd>;
 
   // Block Jacobi alone when `bodies` is empty. A has no blocks coupling two
   // bodies (contacts are rows, not entries of A).
   explicit MomentumPreconditioner(const BlockSparseMatrix& A, const std::vector<RigidModeNodes>& bodies = {});
 
   // out = P_A^-1 x; both #DoF.
-  void apply(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
+  void apply(const Vector& x, Eigen::VectorXd& out) const;
+  // |P_A^-1 x|^2, or a partial sum above stop_above once it passes it (the
+  // sum only grows): a stop test that is passed early need not read every node.
+  double applied_squared_norm(const Vector& x, double stop_above) const;
 
   // D^-1 for one node, and all of them (block SSOR builds on these).
   const Eigen::Matrix3d& diagonal_inverse(int node) const { return m_inv_diag[static_cast<size_t>(node)]; }
@@ -46,10 +51,13 @@ class MomentumPreconditioner {
   const CoarseMatrix& coarse_inverse(int body) const { return m_coarse_inverse[static_cast<size_t>(body)]; }
 
  private:
+  // Per body, the rigid motion S_b^-1 Z_b^T x of the coarse term.
+  std::vector<CoarseVector> coarse_solution(const Vector& x) const;
+
   std::vector<Eigen::Matrix3d> m_inv_diag;     // per node
   std::vector<int> m_body_of_node;             // per node, or empty without bodies
+  std::vector<std::vector<int>> m_body_nodes;  // per body, its nodes
   std::vector<Eigen::Vector3d> m_arm;          // per node: (x_i - c) / RMS arm of its body (0 outside bodies)
-  std::vector<RigidModeNodes> m_bodies;        // nodes only (positions moved into m_arm)
   std::vector<CoarseMatrix> m_coarse_inverse;  // per body
 };
 

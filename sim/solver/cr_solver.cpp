@@ -82,7 +82,6 @@ class CrSolver {
   ContactSolverStats& m_stats;
   int m_n;
   mutable Eigen::VectorXd m_scratch_dv, m_scratch_top;  // apply_B's (and the rounding floor's) work space, #DoF
-  mutable Eigen::VectorXd m_scratch_velocity;           // scaled_square_sum's P_A^-1 r, #DoF
   ProblemPreconditioner m_P;  // P_A^-1 (momentum_preconditioner.h)
   std::unique_ptr<BlockSsor> m_ssor;           // P_A^-1 when settings.preconditioner == ssor
   std::vector<ContactTrack> m_tracks;
@@ -258,22 +257,20 @@ void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const 
 // through the row's effective inverse mass. Independent of the
 // preconditioner, so cr and cr_plain stop at the same accuracy.
 // Returns the sum of squares; it stops early, with a partial sum above
-// `stop_above`, once the sum passes it (the sum only grows).
+// `stop_above`, once the sum passes it (the sum only grows). The few
+// constraint rows go first: they alone pass a stationarity bound on most
+// iterations, and then P_A^-1 need not be applied at all.
 double CrSolver::scaled_square_sum(const Eigen::VectorXd& r, double stop_above, double& constraint_inf) const {
   RECOIL_CHECK(m_row_scale.size() == 3 * contacts(), "row factors out of step with the contacts");
-  double sum = 0.0;
   constraint_inf = 0.0;
-  m_P.get().apply(r.head(m_n), m_scratch_velocity);
-  for (int i = 0; i < m_n / 3; ++i) {
-    sum += m_scratch_velocity.segment<3>(3 * i).squaredNorm();
-    if (sum > stop_above) return sum;
-  }
+  double sum = 0.0;
   for (int i = 0; i < 3 * contacts(); ++i) {
     const double v = r[m_n + i] * m_row_scale[i];
     sum += v * v;
     constraint_inf = std::max(constraint_inf, std::abs(v));
   }
-  return sum;
+  if (sum > stop_above) return sum;
+  return sum + m_P.get().applied_squared_norm(r.head(m_n), stop_above - sum);
 }
 
 double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const {
@@ -299,8 +296,7 @@ void CrSolver::recompute_residual() {
   m_residual_true = true;
   m_problem.A->multiply_magnitudes(m_y.head(m_n), m_scratch_dv);
   m_scratch_dv = std::numeric_limits<double>::epsilon() * (m_scratch_dv + m_d.head(m_n).cwiseAbs());
-  m_P.get().apply(m_scratch_dv, m_scratch_velocity);
-  m_rounding_floor = m_scratch_velocity.norm();
+  m_rounding_floor = std::sqrt(m_P.get().applied_squared_norm(m_scratch_dv, std::numeric_limits<double>::infinity()));
 }
 
 void CrSolver::update_stationary() {
