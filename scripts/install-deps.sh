@@ -19,6 +19,8 @@ packages=(
   libgtest-dev           # tests
   libbenchmark-dev       # make bench
   python3                # the hostile-input corpus test (tests/hostile/)
+  python3-skimage        # the SSIM test checks recoil's SSIM against scikit-image's
+  chromium               # the compare-report test opens report.html in a headless browser
   assimp-testmodels      # a corpus of real, valid and broken mesh files for the import tests
   clang                  # make fuzz: the fuzz targets are built with clang ...
   libclang-rt-14-dev     # ... and linked with its libFuzzer and sanitizer runtimes
