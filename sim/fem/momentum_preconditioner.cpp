@@ -111,10 +111,9 @@ std::vector<MomentumPreconditioner::CoarseVector> MomentumPreconditioner::coarse
   return c;
 }
 
-void MomentumPreconditioner::apply(const Vector& x, Eigen::VectorXd& out) const {
+void MomentumPreconditioner::apply(const Vector& x, Eigen::Ref<Eigen::VectorXd> out) const {
   const int n = static_cast<int>(m_inv_diag.size());
-  RECOIL_CHECK(x.size() == 3 * n, "P_A^-1 applied to a vector of the wrong size");
-  out.resize(x.size());
+  RECOIL_CHECK(x.size() == 3 * n && out.size() == x.size(), "P_A^-1 applied to a vector of the wrong size");
   for (int node = 0; node < n; ++node) out.segment<3>(3 * node) = m_inv_diag[static_cast<size_t>(node)] * x.segment<3>(3 * node);
   const std::vector<CoarseVector> c = coarse_solution(x);
   for (size_t b = 0; b < c.size(); ++b) {

@@ -32,8 +32,8 @@ class MomentumPreconditioner {
   // bodies (contacts are rows, not entries of A).
   explicit MomentumPreconditioner(const BlockSparseMatrix& A, const std::vector<RigidModeNodes>& bodies = {});
 
-  // out = P_A^-1 x; both #DoF.
-  void apply(const Vector& x, Eigen::VectorXd& out) const;
+  // out = P_A^-1 x; both #DoF (out sized by the caller, not aliasing x).
+  void apply(const Vector& x, Eigen::Ref<Eigen::VectorXd> out) const;
   // |P_A^-1 x|^2, or a partial sum above stop_above once it passes it (the
   // sum only grows): a stop test that is passed early need not read every node.
   double applied_squared_norm(const Vector& x, double stop_above) const;

@@ -6,7 +6,10 @@ namespace recoil::sim {
 
 PcgResult solve_pcg(const BlockSparseMatrix& A, const MomentumPreconditioner& P, const Eigen::VectorXd& b,
                     Eigen::VectorXd& x, const PcgSettings& settings) {
-  auto precondition = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) { P.apply(in, out); };
+  auto precondition = [&](const Eigen::VectorXd& in, Eigen::VectorXd& out) {
+    out.resize(in.size());
+    P.apply(in, out);
+  };
 
   PcgResult result;
   x = Eigen::VectorXd::Zero(b.size());

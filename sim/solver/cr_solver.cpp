@@ -56,6 +56,8 @@ class CrSolver {
   void apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   void apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const;
   double scaled_square_sum(const Eigen::VectorXd& r, double stop_above, double& constraint_inf) const;
+  double constraint_square_sum(const Eigen::VectorXd& r, double& constraint_inf) const;
+  void note_residual_from_z();
   double scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const;
   double residual_norm(double& constraint_inf);
   void recompute_residual();
@@ -236,12 +238,13 @@ void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const 
     out = x;
     return;
   }
-  Eigen::VectorXd top;
-  if (m_ssor)
+  if (m_ssor) {
+    Eigen::VectorXd top;
     m_ssor->apply(x.head(m_n), top);
-  else
-    m_P.get().apply(x.head(m_n), top);
-  out.head(m_n) = top;
+    out.head(m_n) = top;
+  } else {
+    m_P.get().apply(x.head(m_n), out.head(m_n));
+  }
   for (int k = 0; k < contacts(); ++k) {
     const int base = m_n + 3 * k;
     if (tangent_on(k) && !m_contact_inv.empty() && m_contact_inv[static_cast<size_t>(k)](0, 0) != 0.0) {
@@ -261,6 +264,13 @@ void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const 
 // constraint rows go first: they alone pass a stationarity bound on most
 // iterations, and then P_A^-1 need not be applied at all.
 double CrSolver::scaled_square_sum(const Eigen::VectorXd& r, double stop_above, double& constraint_inf) const {
+  const double sum = constraint_square_sum(r, constraint_inf);
+  if (sum > stop_above) return sum;
+  return sum + m_P.get().applied_squared_norm(r.head(m_n), stop_above - sum);
+}
+
+// The constraint rows' part of scaled_square_sum, and their largest entry.
+double CrSolver::constraint_square_sum(const Eigen::VectorXd& r, double& constraint_inf) const {
   RECOIL_CHECK(m_row_scale.size() == 3 * contacts(), "row factors out of step with the contacts");
   constraint_inf = 0.0;
   double sum = 0.0;
@@ -269,8 +279,17 @@ double CrSolver::scaled_square_sum(const Eigen::VectorXd& r, double stop_above, 
     sum += v * v;
     constraint_inf = std::max(constraint_inf, std::abs(v));
   }
-  if (sum > stop_above) return sum;
-  return sum + m_P.get().applied_squared_norm(r.head(m_n), stop_above - sum);
+  return sum;
+}
+
+// Called where z = C^-1 r has just been made to hold. When C's momentum
+// block is P_A^-1 itself, z already holds the momentum rows of the scaled
+// residual, and its norm costs no further application of P_A^-1.
+void CrSolver::note_residual_from_z() {
+  m_residual_norm_known = false;
+  if (!m_preconditioned || m_ssor) return;
+  m_residual_norm = std::sqrt(constraint_square_sum(m_r, m_residual_inf) + m_z.head(m_n).squaredNorm());
+  m_residual_norm_known = true;
 }
 
 double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const {
@@ -330,6 +349,7 @@ void CrSolver::count_iteration() {
 
 void CrSolver::restart_recurrence() {
   apply_Cinv(m_r, m_z);
+  note_residual_from_z();
   m_p = m_z;
   apply_B(m_z, m_bz);
   m_q = m_bz;
@@ -354,10 +374,10 @@ void CrSolver::rescue_step() {
   const double alpha = m_z.dot(bdir) / den;
   m_y += alpha * dir;
   m_r -= alpha * bdir;
-  m_residual_norm_known = false;
   m_residual_true = false;
   count_iteration();
   apply_Cinv(m_r, m_z);
+  note_residual_from_z();
   m_p = m_z;
   apply_B(m_z, m_bz);
   m_q = m_bz;
@@ -387,8 +407,8 @@ bool CrSolver::step() {
   const double alpha = m_rho / den;
   m_y += alpha * m_p;
   m_r -= alpha * m_q;
-  m_residual_norm_known = false;
   m_z -= alpha * m_t;
+  note_residual_from_z();
   m_residual_true = false;
   count_iteration();
   ++m_since_restart;

@@ -63,7 +63,7 @@ KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& d
       out.friction = std::max(out.friction, sliding_violation(rows, s, u, w_t));
     }
   }
-  Eigen::VectorXd velocity_error;
+  Eigen::VectorXd velocity_error(g.size());
   P.apply(g, velocity_error);
   out.momentum = velocity_error.lpNorm<Eigen::Infinity>();
   return out;

@@ -17,7 +17,7 @@ namespace {
 // P_A^-1 as a dense matrix, one column per unit vector.
 Eigen::MatrixXd dense_preconditioner(const MomentumPreconditioner& P, int dofs) {
   Eigen::MatrixXd out(dofs, dofs);
-  Eigen::VectorXd column;
+  Eigen::VectorXd column(dofs);
   for (int i = 0; i < dofs; ++i) {
     P.apply(Eigen::VectorXd::Unit(dofs, i), column);
     out.col(i) = column;
@@ -102,13 +102,13 @@ TEST(MomentumPreconditioner, ExactOnRigidModes) {
   Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
   for (const Eigen::Vector3d& x : body.positions) centroid += x / 6.0;
   const Eigen::Vector3d t(0.3, -1.0, 0.2), w(2.0, 0.5, -1.5);
-  Eigen::VectorXd motion(18), force, back;
+  Eigen::VectorXd motion(18), force, back(18);
   for (int node = 0; node < 6; ++node) motion.segment<3>(3 * node) = t + w.cross(body.positions[static_cast<size_t>(node)] - centroid);
   A.multiply(motion, force);
   P.apply(force, back);
   // The additive form adds D^-1 A Z c on top; subtract it to see the coarse part alone.
   const MomentumPreconditioner jacobi(A);
-  Eigen::VectorXd local;
+  Eigen::VectorXd local(18);
   jacobi.apply(force, local);
   EXPECT_LT((back - local - motion).norm(), 1e-10 * motion.norm());
 }
