@@ -1,7 +1,7 @@
 #include "sim/fem/momentum_preconditioner.h"
 
+#include <Eigen/Cholesky>
 #include <Eigen/Eigenvalues>
-#include <Eigen/LU>
 #include <cmath>
 
 #include "core/check.h"
@@ -11,19 +11,31 @@ namespace recoil::sim {
 
 namespace {
 
-// Eigenvalues of Z^T A Z below this share of the largest are dropped from
-// its inverse: a body whose free nodes are collinear has no rotation about
-// that line, and Z^T A Z is singular there.
-constexpr double kCoarseCutoff = 1e-12;
+// Directions of Z^T Z (dimensionless, 6x6; its translation block is #nodes
+// times I) below this share of #nodes are left out of the coarse space: a
+// body whose free nodes are collinear, or a single node, has no rotation
+// about that line, and Z^T A Z is singular there however stiff A is.
+constexpr double kDegenerateMode = 1e-10;
 
-// The symmetric pseudo-inverse of an SPD (or PSD) 6x6 matrix.
-MomentumPreconditioner::CoarseMatrix pseudo_inverse(const MomentumPreconditioner::CoarseMatrix& S) {
-  const Eigen::SelfAdjointEigenSolver<MomentumPreconditioner::CoarseMatrix> eig(S);
-  const Eigen::Matrix<double, 6, 1>& values = eig.eigenvalues();  // ascending
-  Eigen::Matrix<double, 6, 1> inverse = Eigen::Matrix<double, 6, 1>::Zero();
+// The inverse of S = Z^T A Z on the span of the body's rigid motions, the
+// directions of G = Z^T Z that are not degenerate: V (V^T S V)^-1 V^T. The
+// rank comes from the geometry alone, never from S, whose eigenvalues range
+// from the body's mass (free motions) to h^2 k (motions a pin holds).
+MomentumPreconditioner::CoarseMatrix coarse_inverse_on_span(const MomentumPreconditioner::CoarseMatrix& S,
+                                                            const MomentumPreconditioner::CoarseMatrix& G,
+                                                            double nodes) {
+  const Eigen::SelfAdjointEigenSolver<MomentumPreconditioner::CoarseMatrix> eig(G);
+  int rank = 0;
+  Eigen::Matrix<double, 6, 6> V = Eigen::Matrix<double, 6, 6>::Zero();
   for (int i = 0; i < 6; ++i)
-    if (values[i] > kCoarseCutoff * values[5]) inverse[i] = 1.0 / values[i];
-  return eig.eigenvectors() * inverse.asDiagonal() * eig.eigenvectors().transpose();
+    if (eig.eigenvalues()[i] > kDegenerateMode * nodes) V.col(rank++) = eig.eigenvectors().col(i);
+  const Eigen::MatrixXd basis = V.leftCols(rank);
+  const Eigen::MatrixXd reduced = basis.transpose() * S * basis;
+  // S is SPD on that span for SPD A; a rounding that says otherwise (a
+  // condition number near 1e16) leaves the body to the block diagonal alone.
+  const Eigen::LLT<Eigen::MatrixXd> llt(reduced);
+  if (llt.info() != Eigen::Success) return MomentumPreconditioner::CoarseMatrix::Zero();
+  return basis * llt.solve(basis.transpose());
 }
 
 }  // namespace
@@ -35,10 +47,11 @@ MomentumPreconditioner::MomentumPreconditioner(const BlockSparseMatrix& A, const
   for (int r = 0; r < n; ++r) {
     // A block that is not SPD comes only from a state gone non-finite, which
     // the step's health check reports: identity lets that step finish.
-    const Eigen::Matrix3d& block = A.diagonal_block(r);
-    const bool spd = block.determinant() > 0.0;
+    const Eigen::LLT<Eigen::Matrix3d> llt(A.diagonal_block(r));
+    const bool spd = llt.info() == Eigen::Success;
     all_spd = all_spd && spd;
-    m_inv_diag[static_cast<size_t>(r)] = spd ? Eigen::Matrix3d(block.inverse()) : Eigen::Matrix3d(Eigen::Matrix3d::Identity());
+    m_inv_diag[static_cast<size_t>(r)] =
+        spd ? Eigen::Matrix3d(llt.solve(Eigen::Matrix3d::Identity())) : Eigen::Matrix3d(Eigen::Matrix3d::Identity());
   }
   if (bodies.empty() || !all_spd) return;
 
@@ -68,7 +81,11 @@ MomentumPreconditioner::MomentumPreconditioner(const BlockSparseMatrix& A, const
 
   // Z^T A Z for every body at once from six products with A: column j of
   // every body's Z stacked into one vector (A couples no two bodies).
-  std::vector<CoarseMatrix> coarse(bodies.size(), CoarseMatrix::Zero());
+  std::vector<CoarseMatrix> coarse(bodies.size(), CoarseMatrix::Zero()), gram(bodies.size(), CoarseMatrix::Zero());
+  for (int node = 0; node < n; ++node) {
+    const int b = m_body_of_node[static_cast<size_t>(node)];
+    if (b >= 0) gram[static_cast<size_t>(b)] += mode_block(node).transpose() * mode_block(node);
+  }
   Eigen::VectorXd column(A.rows()), product;
   for (int j = 0; j < 6; ++j) {
     column.setZero();
@@ -81,9 +98,10 @@ MomentumPreconditioner::MomentumPreconditioner(const BlockSparseMatrix& A, const
     }
   }
   m_coarse_inverse.reserve(coarse.size());
-  for (CoarseMatrix& S : coarse) {
-    const CoarseMatrix symmetric = 0.5 * (S + S.transpose());
-    m_coarse_inverse.push_back(pseudo_inverse(symmetric));
+  for (size_t b = 0; b < coarse.size(); ++b) {
+    const CoarseMatrix symmetric = 0.5 * (coarse[b] + coarse[b].transpose());
+    m_coarse_inverse.push_back(
+        coarse_inverse_on_span(symmetric, gram[b], static_cast<double>(bodies[b].nodes.size())));
   }
 }
 

@@ -2,7 +2,8 @@
 // P_A^-1: the approximate inverse of a step's matrix A = M + h D + h^2 K that
 // the step's solvers precondition with and measure momentum errors by (m/s).
 // It is the inverted 3x3 diagonal blocks D of A plus, for each deformable
-// body, the exact inverse of A on the body's six rigid motions Z:
+// body, the inverse of A on the body's six rigid motions Z (the coarse term
+// alone maps A Z c back to Z c; D^-1 adds its own part on top):
 //   P_A^-1 = D^-1 + sum_b Z_b (Z_b^T A Z_b)^-1 Z_b^T,   Z_b: #DoF by 6.
 // A stiff body's diagonal blocks hold h^2 k >> m, so D^-1 alone reads a net
 // force on it as a velocity error h^2 k / m times too small, and moves its

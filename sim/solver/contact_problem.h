@@ -97,10 +97,13 @@ struct ContactProblem {
 enum class SolverMethod { cr, cr_plain, pgs };
 const char* to_string(SolverMethod method);
 
-// C = diag(P_A, P_S) for `cr`: block_jacobi = P_A^-1 of problem.preconditioner
-// (3x3 diagonal blocks of A, plus rigid modes when given) and diag(J P_A^-1 J^T); contact_blocks = the same P_A with each contact's 3x3
-// block J_k P_A^-1 J_k^T on its selected rows; ssor = block SSOR
-// (omega 1.5) for P_A with the contact blocks. Measurements in cr_solver.h.
+// C = diag(P_A, P_S) for `cr`: block_jacobi = P_A^-1 of
+// problem.preconditioner (3x3 diagonal blocks of A, plus the bodies' rigid
+// modes when given) and diag(J P_A^-1 J^T); contact_blocks = the same P_A
+// with each contact's 3x3 block J_k P_A^-1 J_k^T on its selected rows;
+// ssor = block SSOR (omega 1.5) for P_A, without the rigid modes (a stiff
+// body converges slowly under it), with the contact blocks. Measurements in
+// cr_solver.h.
 enum class CrPreconditioner { block_jacobi, contact_blocks, ssor };
 const char* to_string(CrPreconditioner preconditioner);
 

@@ -94,11 +94,13 @@ class CrSolver {
   // the row by (1 when selected, its effective inverse mass w otherwise), and
   // what P_S^-1 divides it by (w when selected, 1 otherwise).
   Eigen::VectorXd m_row_scale, m_row_divisor;
-  // What rounding alone leaves in m_r's momentum rows, m/s: eps (|A| |dv| +
-  // |d|) through P_A^-1, set with each explicit residual. A stiff body's
-  // A dv cancels terms of h^2 k |dv| down to m dv, so at E = 1e12 Pa and
-  // dt = 0.1 s no iterate gets below about 1e-6 m/s; the solve counts as
-  // converged at this floor when it lies above epsilon_1.
+  // What rounding can leave in m_r's momentum rows, m/s: eps (|A| |dv| +
+  // |d|) through P_A^-1, set with each explicit residual; a worst case, as
+  // if every rounding error had the same sign (random signs give about
+  // sqrt(#nodes) less). A stiff body's A dv cancels terms of h^2 k |dv| down
+  // to m dv, so at E = 1e12 Pa and dt = 0.1 s no iterate gets below about
+  // 1e-6 m/s; the solve counts as converged at this floor when it lies above
+  // epsilon_1. For soft bodies it is far below epsilon_1 and changes nothing.
   double m_rounding_floor = 0.0;
   bool m_residual_norm_known = false;  // m_residual_norm / m_residual_inf describe m_r
   double m_residual_norm = 0.0, m_residual_inf = 0.0;
@@ -188,7 +190,9 @@ void CrSolver::build_rhs() {
     if (normal_on(k)) m_d[m_n + 3 * k] = -rows.rhs_normal - preload[0];
     if (tangent_on(k)) m_d.segment<2>(m_n + 3 * k + 1) = -rows.rhs_tangent - preload.tail<2>();
   }
-  // The per-row factors follow the states here, as the right-hand side does.
+  // The per-row factors follow the states here, as the right-hand side does
+  // (and the residual's norm, which reads them, is stale).
+  m_residual_norm_known = false;
   m_row_scale.resize(3 * m);
   m_row_divisor.resize(3 * m);
   for (int k = 0; k < m; ++k)
@@ -282,9 +286,11 @@ double CrSolver::constraint_square_sum(const Eigen::VectorXd& r, double& constra
   return sum;
 }
 
-// Called where z = C^-1 r has just been made to hold. When C's momentum
-// block is P_A^-1 itself, z already holds the momentum rows of the scaled
-// residual, and its norm costs no further application of P_A^-1.
+// Called where z = C^-1 r has just been made to hold: explicitly after a
+// restart, by the recurrence after a CR step (to rounding; every stop is
+// re-checked on the explicit residual). When C's momentum block is P_A^-1
+// itself, z then holds the momentum rows of the scaled residual, and its
+// norm costs no further application of P_A^-1.
 void CrSolver::note_residual_from_z() {
   m_residual_norm_known = false;
   if (!m_preconditioned || m_ssor) return;

@@ -9,7 +9,9 @@
 // and B stays symmetric. Only products with A and
 // the per-contact blocks of J are used.
 //
-// The preconditioner (`recoil_bench solver_fem`: a tetrahedralized
+// The preconditioner, measured with P_A = the diagonal blocks alone, before
+// the rigid-mode term of momentum_preconditioner.h (the bench's problems
+// still leave ContactProblem::preconditioner null; `recoil_bench solver_fem`: a tetrahedralized
 // 0.5 m cube, rho 1000, h = 1/60 s, 1029 and 3993 DoF, 49 and 121 bottom
 // contacts, E 1e5..1e7, sliding at 0.2 m/s or resting; tolerance 1e-6 m/s,
 // cold start; times on the shared 2-core machine, +-30% noise):

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <limits>
 #include <random>
 
 #include "sim/solver/contact_rows_ops.h"
@@ -68,26 +69,45 @@ TEST(ContactRowsOps, KernelsMatchDenseBlockJacobi) {
   EXPECT_NE(normal_rows_product(problem.rows[0], problem.rows[1], P), 0.0);
 }
 
+// Two bodies that A does not couple (springs inside each only): nodes 0-3,
+// and nodes 4-5, a pair on a line (no rotation about it: five rigid modes).
+// One contact spans both bodies.
 TEST(ContactRowsOps, KernelsMatchDenseWithRigidModes) {
   std::mt19937 rng(7);
-  OwnedProblem owned = three_contacts(rng);
-  const ContactProblem& problem = owned.problem;
+  OwnedProblem owned;
+  owned.A = mass_spring_matrix({1.0, 2.0, 1.5, 0.5, 1.0, 3.0}, {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {4, 5}}, 50.0);
+  owned.problem.A = owned.A.get();
+  owned.problem.b = Eigen::VectorXd::Zero(18);
+  ContactProblem& problem = owned.problem;
+  add_contact(problem, {0, 1, 3}, {0.2, 0.5, 0.3}, Eigen::Vector3d(0.3, 1.0, -0.2), 0.0, 0.5, 0.5);
+  add_contact(problem, {1, 2, 3}, {0.6, 0.1, 0.3}, Eigen::Vector3d(-0.1, 1.0, 0.4), 0.0, 0.5, 0.5);
+  add_contact(problem, {4}, {1.0}, Eigen::Vector3d(0.3, 0.5, 1.0), 0.0, 0.5, 0.5);
+  add_contact(problem, {2, 5}, {1.0, -1.0}, Eigen::Vector3d(1.0, 0.2, 0.4), 0.0, 0.5, 0.5);
   std::uniform_real_distribution<double> coordinate(-0.5, 0.5);
-  // Nodes 0-3 one body, node 4 alone in another (one node: translations only).
   RigidModeNodes first, second;
   for (int node = 0; node < 4; ++node) {
     first.nodes.push_back(node);
     first.positions.emplace_back(coordinate(rng), coordinate(rng), coordinate(rng));
   }
-  second.nodes.push_back(4);
-  second.positions.emplace_back(0.0, 0.0, 0.0);
+  second.nodes = {4, 5};
+  second.positions = {Eigen::Vector3d(0.0, 0.0, 0.0), Eigen::Vector3d(0.0, 0.3, 0.0)};
   const MomentumPreconditioner P(*problem.A, {first, second});
   expect_kernels_match_dense(problem, P);
-  // Contacts on different bodies still share nothing.
+  // Contacts on different bodies share nothing; the spanning one couples to both.
   EXPECT_EQ(normal_rows_product(problem.rows[0], problem.rows[2], P), 0.0);
+  EXPECT_NE(normal_rows_product(problem.rows[0], problem.rows[3], P), 0.0);
+  EXPECT_NE(normal_rows_product(problem.rows[2], problem.rows[3], P), 0.0);
+  // Contacts on distinct nodes of one body couple through its rigid motion.
+  add_contact(problem, {0}, {1.0}, Eigen::Vector3d(0.0, 1.0, 0.0), 0.0, 0.5, 0.5);
+  add_contact(problem, {2}, {1.0}, Eigen::Vector3d(0.0, 1.0, 0.0), 0.0, 0.5, 0.5);
+  EXPECT_GT(normal_rows_product(problem.rows[4], problem.rows[5], P), 0.0);
+  // The pair's coarse term: a rotation about its own line is no motion of it.
+  const MomentumPreconditioner::CoarseMatrix& S_inv = P.coarse_inverse(1);
+  EXPECT_TRUE(S_inv.allFinite());
+  EXPECT_LT((S_inv * (Eigen::Matrix<double, 6, 1>() << 0, 0, 0, 0, 1, 0).finished()).norm(), 1e-12);
 }
 
-// On a rigid motion of a body, P_A^-1 inverts A exactly: P (A Z c) = Z c.
+// On a rigid motion of a body, the coarse term inverts A: (P - D^-1) (A Z c) = Z c.
 TEST(MomentumPreconditioner, ExactOnRigidModes) {
   std::mt19937 rng(11);
   OwnedProblem owned = random_system(6, 1.0, rng);
@@ -111,6 +131,12 @@ TEST(MomentumPreconditioner, ExactOnRigidModes) {
   Eigen::VectorXd local(18);
   jacobi.apply(force, local);
   EXPECT_LT((back - local - motion).norm(), 1e-10 * motion.norm());
+  // The squared norm, whole and stopped early.
+  EXPECT_NEAR(P.applied_squared_norm(force, std::numeric_limits<double>::infinity()), back.squaredNorm(),
+              1e-12 * back.squaredNorm());
+  const double partial = P.applied_squared_norm(force, 1e-3 * back.squaredNorm());
+  EXPECT_GT(partial, 1e-3 * back.squaredNorm());
+  EXPECT_LE(partial, back.squaredNorm() * (1.0 + 1e-12));
 }
 
 }  // namespace
