@@ -134,23 +134,19 @@ void MomentumPreconditioner::apply(const Vector& x, Eigen::Ref<Eigen::VectorXd> 
   RECOIL_CHECK(x.size() == 3 * n && out.size() == x.size(), "P_A^-1 applied to a vector of the wrong size");
   for (int node = 0; node < n; ++node) out.segment<3>(3 * node) = m_inv_diag[static_cast<size_t>(node)] * x.segment<3>(3 * node);
   const std::vector<CoarseVector> c = coarse_solution(x);
-  for (size_t b = 0; b < c.size(); ++b) {
-    const Eigen::Vector3d translation = c[b].head<3>(), rotation = c[b].tail<3>();
-    for (int node : m_body_nodes[b]) out.segment<3>(3 * node) += translation + rotation.cross(m_arm[static_cast<size_t>(node)]);
-  }
+  for (size_t b = 0; b < c.size(); ++b)
+    for (int node : m_body_nodes[b]) out.segment<3>(3 * node) += motion_at(c[b], node);
 }
 
 double MomentumPreconditioner::applied_squared_norm(const Vector& x, double stop_above) const {
   const int n = static_cast<int>(m_inv_diag.size());
   RECOIL_CHECK(x.size() == 3 * n, "P_A^-1 applied to a vector of the wrong size");
   const std::vector<CoarseVector> c = coarse_solution(x);
-  const bool coarse = !m_body_of_node.empty();
   double sum = 0.0;
   for (int node = 0; node < n; ++node) {
-    const size_t i = static_cast<size_t>(node);
-    Eigen::Vector3d v = m_inv_diag[i] * x.segment<3>(3 * node);
-    const int b = coarse ? m_body_of_node[i] : -1;
-    if (b >= 0) v += c[static_cast<size_t>(b)].head<3>() + c[static_cast<size_t>(b)].tail<3>().cross(m_arm[i]);
+    Eigen::Vector3d v = m_inv_diag[static_cast<size_t>(node)] * x.segment<3>(3 * node);
+    const int b = body_of(node);
+    if (b >= 0) v += motion_at(c[static_cast<size_t>(b)], node);
     sum += v.squaredNorm();
     if (sum > stop_above) return sum;
   }

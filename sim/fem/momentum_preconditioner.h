@@ -54,6 +54,10 @@ class MomentumPreconditioner {
  private:
   // Per body, the rigid motion S_b^-1 Z_b^T x of the coarse term.
   std::vector<CoarseVector> coarse_solution(const Vector& x) const;
+  // Rigid motion c (translation, rotation) of a body at one of its nodes: Z_i c.
+  Eigen::Vector3d motion_at(const CoarseVector& c, int node) const {
+    return c.head<3>() + c.tail<3>().cross(m_arm[static_cast<size_t>(node)]);
+  }
 
   std::vector<Eigen::Matrix3d> m_inv_diag;     // per node
   std::vector<int> m_body_of_node;             // per node, or empty without bodies

@@ -61,6 +61,7 @@ class CrSolver {
   double scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const;
   double residual_norm(double& constraint_inf);
   void recompute_residual();
+  double rounding_floor() const;
   void update_stationary();
   void restart_true();
   void restart(KrylovStart cause);
@@ -94,14 +95,6 @@ class CrSolver {
   // the row by (1 when selected, its effective inverse mass w otherwise), and
   // what P_S^-1 divides it by (w when selected, 1 otherwise).
   Eigen::VectorXd m_row_scale, m_row_divisor;
-  // What rounding can leave in m_r's momentum rows, m/s: eps (|A| |dv| +
-  // |d|) through P_A^-1, set with each explicit residual; a worst case, as
-  // if every rounding error had the same sign (random signs give about
-  // sqrt(#nodes) less). A stiff body's A dv cancels terms of h^2 k |dv| down
-  // to m dv, so at E = 1e12 Pa and dt = 0.1 s no iterate gets below about
-  // 1e-6 m/s; the solve counts as converged at this floor when it lies above
-  // epsilon_1. For soft bodies it is far below epsilon_1 and changes nothing.
-  double m_rounding_floor = 0.0;
   bool m_residual_norm_known = false;  // m_residual_norm / m_residual_inf describe m_r
   double m_residual_norm = 0.0, m_residual_inf = 0.0;
   double m_rho = 0.0;
@@ -319,9 +312,18 @@ void CrSolver::recompute_residual() {
   m_r = m_d - m_r;
   m_residual_norm_known = false;
   m_residual_true = true;
+}
+
+// What rounding can leave in the explicit residual's momentum rows at y,
+// m/s: eps (|A| |dv| + |d|) through P_A^-1; a worst case, as if every
+// rounding error had the same sign (random signs give about sqrt(#nodes)
+// less). A stiff body's A dv cancels terms of h^2 k |dv| down to m dv, so at
+// E = 1e12 Pa and dt = 0.1 s no iterate gets below about 1e-6 m/s. For soft
+// bodies it is far below epsilon_1 and changes nothing.
+double CrSolver::rounding_floor() const {
   m_problem.A->multiply_magnitudes(m_y.head(m_n), m_scratch_dv);
   m_scratch_dv = std::numeric_limits<double>::epsilon() * (m_scratch_dv + m_d.head(m_n).cwiseAbs());
-  m_rounding_floor = std::sqrt(m_P.get().applied_squared_norm(m_scratch_dv, std::numeric_limits<double>::infinity()));
+  return std::sqrt(m_P.get().applied_squared_norm(m_scratch_dv, std::numeric_limits<double>::infinity()));
 }
 
 void CrSolver::update_stationary() {
@@ -566,7 +568,13 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   while (!out_of_budget()) {
     double constraint_inf = 0.0;
     const double res = residual_norm(constraint_inf);
-    const bool small = res < std::max(m_settings.tolerance, m_rounding_floor) &&
+    // A recheck that finds the explicit residual above epsilon_1 while the
+    // recurrence's was below it is at rounding's floor, if anywhere: only
+    // then is the floor worth its product with |A|, and the solve counts
+    // as converged when the residual lies within it.
+    const bool below = res < m_settings.tolerance ||
+                       (m_residual_true && m_start == KrylovStart::recheck && res < rounding_floor());
+    const bool small = below &&
                        (!m_residual_true || constraint_inf < m_settings.constraint_tolerance);
     if (small || m_stationary) {
       const Finish finish = finish_or_continue();
