@@ -3,12 +3,14 @@
 #include <algorithm>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <thread>
 
 #include "core/check.h"
 #include "sim/collision/candidate_reduction.h"
 #include "sim/collision/embree_scene.h"
 #include "sim/collision/narrow_phase.h"
+#include "sim/collision/rest_clearance.h"
 
 namespace recoil::sim {
 
@@ -20,6 +22,8 @@ struct CollisionDetector::Impl {
     std::unique_ptr<TriangleScene> faces;
     std::unique_ptr<BoxScene> edge_boxes;       // padded by the edges' motion, against other surfaces
     std::unique_ptr<BoxScene> self_edge_boxes;  // padded by their deformation motion, keyed by their vertices
+    std::unique_ptr<RestClearance> clearance;   // of `rest_shape`, for self-contact surfaces
+    const Points* rest_shape = nullptr;
   };
   EmbreeDevice device;
   std::vector<SurfaceScenes> scenes;
@@ -54,20 +58,90 @@ void parallel_chunks(size_t n, int threads, const Chunk& work, std::vector<Conta
   for (auto& part : parts) out.insert(out.end(), std::make_move_iterator(part.begin()), std::make_move_iterator(part.end()));
 }
 
-// Each edge's x0 box padded by margin/2 plus its motion: against another
-// surface its absolute motion, against its own surface its deformation
-// motion (PreparedSurface), the larger of its two vertices'.
-std::vector<Aabb> edge_boxes(const PreparedSurface& s, double margin, bool self) {
-  std::vector<Aabb> boxes(s.edges.size());
+// How far each vertex of a self-contact surface moves over the step with
+// respect to the surface near it, m (#V): q with margin + q_i + q_j at least
+// the distance at x0 within which two of its primitives, one holding vertex i
+// and the other vertex j, can be a candidate (narrow_phase.h: distance <=
+// margin + their relative motion). The step's motion m = x1 - x0 splits into
+// a rigid part (R - I) x0 + t and a residual e, so |m_i - m_j| <= e_i + e_j +
+// theta |x0_i - x0_j| with theta = |R - I|, and |x0_i - x0_j| <= d + 2 l for
+// primitives d apart with edges at most l long; solved for d, that gives
+// q = (e + theta (l + margin / 2)) / (1 - theta). A body tumbling as a whole
+// therefore searches within the margin alone. R is the step's least-squares
+// rigid fit, or the identity (e: the motion less its mean) where that is less.
+std::vector<double> self_motion(const PreparedSurface& s, double margin) {
+  const Points& x0 = s.surface->x0;
+  double longest = 0.0;
+  for (const auto& e : s.edges) longest = std::max(longest, (x0.row(e[0]) - x0.row(e[1])).norm());
+  auto bound = [&](const RigidFit& fit) {
+    const double theta = (fit.rotation - Eigen::Matrix3d::Identity()).norm();  // Frobenius >= spectral
+    std::vector<double> q(fit.residual.size(), std::numeric_limits<double>::infinity());
+    if (theta < 0.5)
+      for (size_t v = 0; v < q.size(); ++v) q[v] = (fit.residual[v] + theta * (longest + 0.5 * margin)) / (1.0 - theta);
+    return q;
+  };
+  RigidFit translation;
+  translation.translation = (s.surface->x1 - x0).colwise().mean().transpose();
+  translation.residual.resize(static_cast<size_t>(x0.rows()));
+  for (int v = 0; v < x0.rows(); ++v)
+    translation.residual[static_cast<size_t>(v)] =
+        (s.surface->x1.row(v) - x0.row(v) - translation.translation.transpose()).norm();
+  std::vector<double> q = bound(translation), rigid = bound(fit_rigid_motion(x0, s.surface->x1));
+  const auto largest = [](const std::vector<double>& x) { return x.empty() ? 0.0 : *std::max_element(x.begin(), x.end()); };
+  return largest(rigid) < largest(q) ? rigid : q;
+}
+
+// What the self queries of one surface search this step.
+struct SelfSearch {
+  std::vector<double> motion;  // #V, self_motion
+  double max_motion = 0.0;
+  // Whether each vertex's point query runs (#V), and the edges that go into
+  // the self box scene (ascending): those whose rest clearance, less their
+  // displacement from the rigid fit of the rest shape and the surface's
+  // largest, is within the self query's radius (rest_clearance.h).
+  std::vector<char> vertex;
+  std::vector<int> edges;
+};
+
+SelfSearch self_search(const PreparedSurface& s, const RestClearance& clearance, double margin) {
+  SelfSearch out;
+  out.motion = self_motion(s, margin);
+  for (double q : out.motion) out.max_motion = std::max(out.max_motion, q);
+  const std::vector<double> displacement = fit_rigid_motion(*s.surface->rest, s.surface->x0).residual;
+  double largest = 0.0;
+  for (double d : displacement) largest = std::max(largest, d);
+  // Rounding of the distances compared, m (relative 1e-12 of the coordinates).
+  const double slack = 1e-12 * s.length_scale;
+  const double reach = margin + out.max_motion + largest + slack;
+  out.vertex.resize(static_cast<size_t>(s.num_vertices()));
+  for (size_t v = 0; v < out.vertex.size(); ++v)
+    out.vertex[v] = clearance.vertex[v] - displacement[v] <= reach + out.motion[v];
   for (size_t e = 0; e < s.edges.size(); ++e) {
+    const size_t p = static_cast<size_t>(s.edges[e][0]), q = static_cast<size_t>(s.edges[e][1]);
+    if (clearance.edge[e] - std::max(displacement[p], displacement[q]) <= reach + std::max(out.motion[p], out.motion[q]))
+      out.edges.push_back(static_cast<int>(e));
+  }
+  return out;
+}
+
+// Each edge's x0 box padded by margin/2 plus its motion: against another
+// surface its absolute motion (`self` null), against its own surface its
+// motion with respect to the surface (SelfSearch), the larger of its two
+// vertices'; for the edges listed (all when `only` is null).
+std::vector<Aabb> edge_boxes(const PreparedSurface& s, double margin, const SelfSearch* self) {
+  const std::vector<int>* only = self ? &self->edges : nullptr;
+  const size_t n = only ? only->size() : s.edges.size();
+  std::vector<Aabb> boxes(n);
+  for (size_t k = 0; k < n; ++k) {
+    const size_t e = only ? static_cast<size_t>((*only)[k]) : k;
     const Eigen::Vector3d p = s.surface->x0.row(s.edges[e][0]).transpose();
     const Eigen::Vector3d q = s.surface->x0.row(s.edges[e][1]).transpose();
-    const double motion = self ? std::max(s.deformation_motion[static_cast<size_t>(s.edges[e][0])],
-                                          s.deformation_motion[static_cast<size_t>(s.edges[e][1])])
+    const double motion = self ? std::max(self->motion[static_cast<size_t>(s.edges[e][0])],
+                                          self->motion[static_cast<size_t>(s.edges[e][1])])
                                : s.edge_motion[e];
     const Eigen::Vector3d pad = Eigen::Vector3d::Constant(0.5 * margin + motion);
-    boxes[e].min = p.cwiseMin(q) - pad;
-    boxes[e].max = p.cwiseMax(q) + pad;
+    boxes[k].min = p.cwiseMin(q) - pad;
+    boxes[k].max = p.cwiseMax(q) + pad;
   }
   return boxes;
 }
@@ -89,6 +163,7 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
   // Refit (same triangles as last call) or rebuild each surface's scenes.
   std::vector<PreparedSurface> prepared;
   prepared.reserve(surfaces.size());
+  std::vector<SelfSearch> searches(surfaces.size());
   m_impl->scenes.resize(surfaces.size());
   for (size_t i = 0; i < surfaces.size(); ++i) {
     Impl::SurfaceScenes& sc = m_impl->scenes[i];
@@ -114,10 +189,18 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
       sc.self_edge_boxes.reset();
       ++m_stats.rebuilt_surfaces;
     }
-    sc.edge_boxes->set_boxes(edge_boxes(prepared[i], margin, false), {});
+    sc.edge_boxes->set_boxes(edge_boxes(prepared[i], margin, nullptr), {});
     if (self_interacts(prepared[i])) {
+      if (!same || sc.rest_shape != s.rest || !sc.clearance) {
+        sc.clearance = std::make_unique<RestClearance>(
+            rest_clearance(m_impl->device, *s.rest, s.triangles, sc.edges, margin, clearance_reach(margin)));
+        sc.rest_shape = s.rest;
+      }
+      searches[i] = self_search(prepared[i], *sc.clearance, margin);
       if (!sc.self_edge_boxes) sc.self_edge_boxes = std::make_unique<BoxScene>(m_impl->device);
-      sc.self_edge_boxes->set_boxes(edge_boxes(prepared[i], margin, true), sc.edges);
+      std::vector<std::array<int, 2>> keys;
+      for (int e : searches[i].edges) keys.push_back(sc.edges[static_cast<size_t>(e)]);
+      sc.self_edge_boxes->set_boxes(edge_boxes(prepared[i], margin, &searches[i]), std::move(keys));
     }
   }
 
@@ -130,11 +213,13 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
                     [&](size_t begin, size_t end, std::vector<ContactCandidate>& part) {
                       std::vector<int> near;
                       for (size_t v = begin; v < end; ++v) {
+                        if (a.index == b.index && !searches[static_cast<size_t>(a.index)].vertex[v]) continue;
                         near.clear();
                         const int vi = static_cast<int>(v);
                         const Eigen::Vector3d p = a.surface->x0.row(vi).transpose();
                         const double radius = a.index == b.index
-                                                  ? margin + a.deformation_motion[v] + a.max_deformation_motion
+                                                  ? margin + searches[static_cast<size_t>(a.index)].motion[v] +
+                                                        searches[static_cast<size_t>(a.index)].max_motion
                                                   : margin + a.vertex_motion[v] + b.max_motion;
                         // Farther than `radius` from all of B (its box) is never a candidate.
                         const Eigen::Vector3d outside =
@@ -147,7 +232,10 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
                       }
                     },
                     out);
-    for (long long c : counts) m_stats.vertex_triangle_pairs += c;
+    for (long long c : counts) {
+      m_stats.vertex_triangle_pairs += c;
+      if (a.index == b.index) m_stats.self_pairs += c;
+    }
   };
   auto edges_against_edges = [&](const PreparedSurface& a, const PreparedSurface& b) {
     const Impl::SurfaceScenes& sa = m_impl->scenes[a.index];
@@ -156,9 +244,18 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
     const BoxScene* boxes_a = self ? sa.self_edge_boxes.get() : sa.edge_boxes.get();
     const BoxScene* boxes_b = self ? sb.self_edge_boxes.get() : sb.edge_boxes.get();
     if (!boxes_a || !boxes_b) return;
-    // Self: each unordered pair once, (lo, hi), as test_edge_edge requires.
-    const std::vector<std::pair<int, int>> pairs = boxes_a->overlapping_pairs(*boxes_b);
+    // Self: each unordered pair once, (lo, hi), as test_edge_edge requires;
+    // the self box scene holds only the searched edges, ascending.
+    std::vector<std::pair<int, int>> pairs = boxes_a->overlapping_pairs(*boxes_b);
+    if (self) {
+      const std::vector<int>& searched = searches[static_cast<size_t>(a.index)].edges;
+      for (auto& [e, f] : pairs) {
+        e = searched[static_cast<size_t>(e)];
+        f = searched[static_cast<size_t>(f)];
+      }
+    }
     m_stats.edge_edge_pairs += static_cast<long long>(pairs.size());
+    if (self) m_stats.self_pairs += static_cast<long long>(pairs.size());
     parallel_chunks(pairs.size(), threads,
                     [&](size_t begin, size_t end, std::vector<ContactCandidate>& part) {
                       for (size_t k = begin; k < end; ++k)

@@ -10,6 +10,9 @@
 //   exact test and continuous check of narrow_phase.h on each offered triangle;
 // - edge-edge: rtcCollide of edge boxes (x0 box inflated by margin/2 + d(e)),
 //   then the exact segment test;
+// - self-contact: the same two queries over the surface's own primitives,
+//   for only those that deformation may have brought within reach of a
+//   primitive they may contact (rest_clearance.h);
 // - vertex-plane: analytic.
 // The rule for what becomes a candidate is in narrow_phase.h; the brute-force
 // oracle (brute_force.h) applies the same rule to all pairs.
@@ -29,6 +32,7 @@ namespace recoil::sim {
 struct CollisionStats {
   long long vertex_triangle_pairs = 0;  // pairs offered by point queries (exact tests run)
   long long edge_edge_pairs = 0;        // pairs offered by rtcCollide
+  long long self_pairs = 0;             // of both, those within one surface
   int rebuilt_surfaces = 0;             // scenes built from scratch this call (others refitted)
 };
 

@@ -7,6 +7,7 @@
 #include "core/check.h"
 #include "sim/collision/ccd.h"
 #include "sim/collision/exact_distance.h"
+#include "sim/collision/rest_clearance.h"
 
 namespace recoil::sim {
 namespace {
@@ -184,14 +185,6 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   }
   if (nv > 0)
     out.length_scale = std::max(surface.x0.cwiseAbs().maxCoeff(), surface.x1.cwiseAbs().maxCoeff());
-  if (nv > 0 && self_interacts(out)) {
-    const Eigen::Vector3d mean = (surface.x1 - surface.x0).colwise().mean().transpose();
-    out.deformation_motion.resize(static_cast<size_t>(nv));
-    for (int v = 0; v < nv; ++v) {
-      out.deformation_motion[v] = (row(surface.x1, v) - row(surface.x0, v) - mean).norm();
-      out.max_deformation_motion = std::max(out.max_deformation_motion, out.deformation_motion[v]);
-    }
-  }
   const int nf = static_cast<int>(surface.triangles.rows());
   out.triangle_motion.resize(static_cast<size_t>(nf));
   for (int f = 0; f < nf; ++f) {
@@ -231,17 +224,10 @@ namespace {
 // The self-contact rule (collision_types.h): primitives of one surface that
 // lie within the margin of each other in the rest shape are never a contact.
 bool close_at_rest(const PreparedSurface& s, int vertex, const std::array<int, 3>& triangle, double margin) {
-  const Points& rest = *s.surface->rest;
-  const Eigen::Vector3d p = row(rest, vertex);
-  const TriangleClosestPoint q = closest_point_on_triangle(p, row(rest, triangle[0]), row(rest, triangle[1]),
-                                                           row(rest, triangle[2]));
-  return (p - q.point).norm() <= margin;
+  return rest_distance(*s.surface->rest, vertex, triangle) <= margin;
 }
 bool close_at_rest(const PreparedSurface& s, const std::array<int, 2>& e, const std::array<int, 2>& f, double margin) {
-  const Points& rest = *s.surface->rest;
-  const Eigen::Vector3d a0 = row(rest, e[0]), a1 = row(rest, e[1]), b0 = row(rest, f[0]), b1 = row(rest, f[1]);
-  const SegmentClosestPoints c = closest_points_on_segments(a0, a1, b0, b1);
-  return ((a0 + c.s * (a1 - a0)) - (b0 + c.t * (b1 - b0))).norm() <= margin;
+  return rest_distance(*s.surface->rest, e, f) <= margin;
 }
 
 }  // namespace

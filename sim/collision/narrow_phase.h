@@ -93,12 +93,6 @@ struct PreparedSurface {
                                                   // non-manifold or inconsistently wound edge)
   bool closed = false;                        // every edge has both triangles, wound consistently
   double max_motion = 0.0;                    // over all vertices
-  // Self-contact surfaces only: |x1 - x0 - mean over vertices of (x1 - x0)|
-  // (#V) and its largest value. Two vertices move with respect to each
-  // other by at most the sum of theirs, so a body falling or sliding as a
-  // whole searches its own surface within the margin alone.
-  std::vector<double> deformation_motion;
-  double max_deformation_motion = 0.0;
   double length_scale = 0.0;                  // largest |coordinate|, for tolerances
   Aabb box0;                                  // bounding box of x0
 
