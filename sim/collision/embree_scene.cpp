@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <atomic>
 #include <cstdint>
 #include <mutex>
 
@@ -216,13 +217,33 @@ bool overlap(const RTCBounds& a, const RTCBounds& b) {
          a.lower_z <= b.upper_z && b.lower_z <= a.upper_z;
 }
 
+// The pairs of one rtcCollide call. Embree calls back from several threads
+// in small batches, so each thread appends to a buffer of its own, taken
+// under the lock once per call (a lock per batch had been a third of a
+// self query); the buffers are joined and sorted after the call.
 struct CollideOutput {
   const BoxScene::Impl* scene0;
   const BoxScene::Impl* scene1;
-  std::mutex mutex;  // Embree may call back from several threads
-  std::vector<std::pair<int, int>> pairs;
+  std::mutex mutex;
+  std::vector<std::unique_ptr<std::vector<std::pair<int, int>>>> buffers;
   bool failed = false;  // an allocation failed inside the callback
+  unsigned long long call = 0;  // tells this call's buffers from earlier calls'
 };
+
+std::atomic<unsigned long long> g_collide_calls{0};
+
+// This thread's buffer for `output`, created on its first batch.
+std::vector<std::pair<int, int>>& thread_buffer(CollideOutput& output) {
+  thread_local unsigned long long cached_call = 0;
+  thread_local std::vector<std::pair<int, int>>* cached = nullptr;
+  if (cached_call != output.call) {
+    std::lock_guard<std::mutex> lock(output.mutex);
+    output.buffers.push_back(std::make_unique<std::vector<std::pair<int, int>>>());
+    cached = output.buffers.back().get();
+    cached_call = output.call;
+  }
+  return *cached;
+}
 
 // Whether boxes i (of scene0) and j (of scene1) form a pair as
 // overlapping_pairs defines it; a self pair is taken as (lo, hi).
@@ -240,9 +261,7 @@ bool is_pair(const BoxScene::Impl& scene0, const BoxScene::Impl& scene1, unsigne
 
 void append_overlaps(CollideOutput& output, const RTCCollision* collisions, unsigned int count) {
   const bool self = output.scene0 == output.scene1;
-  // Filter outside the lock; only the survivors are appended under it.
-  thread_local std::vector<std::pair<int, int>> kept;
-  kept.clear();
+  std::vector<std::pair<int, int>>& kept = thread_buffer(output);
   for (unsigned int k = 0; k < count; ++k) {
     unsigned i = collisions[k].primID0, j = collisions[k].primID1;
     // Embree reports leaf-box pairs: keep the pairs whose own boxes overlap,
@@ -250,8 +269,6 @@ void append_overlaps(CollideOutput& output, const RTCCollision* collisions, unsi
     if (self && i > j) std::swap(i, j);
     if (is_pair(*output.scene0, *output.scene1, i, j)) kept.emplace_back(static_cast<int>(i), static_cast<int>(j));
   }
-  std::lock_guard<std::mutex> lock(output.mutex);
-  output.pairs.insert(output.pairs.end(), kept.begin(), kept.end());
 }
 
 // Sorts (i, j) pairs of non-negative ints and drops repeats: an LSD radix
@@ -363,14 +380,19 @@ std::vector<std::pair<int, int>> BoxScene::overlapping_pairs(const BoxScene& oth
         if (is_pair(*m_impl, *other.m_impl, i, j)) pairs.emplace_back(static_cast<int>(i), static_cast<int>(j));
     return pairs;
   }
-  CollideOutput output{m_impl.get(), other.m_impl.get(), {}, {}, false};
+  CollideOutput output{m_impl.get(), other.m_impl.get(), {}, {}, false, ++g_collide_calls};
   commit_if_stale(*m_impl);
   commit_if_stale(*other.m_impl);
   rtcCollide(m_impl->scene, other.m_impl->scene, collect_collisions, &output);
   m_impl->device->throw_if_error("rtcCollide on box scenes");
   if (output.failed) throw Error(ErrorKind::internal, "out of memory in rtcCollide");
-  sort_unique_pairs(output.pairs);
-  return std::move(output.pairs);
+  std::vector<std::pair<int, int>> pairs;
+  size_t total = 0;
+  for (const auto& buffer : output.buffers) total += buffer->size();
+  pairs.reserve(total);
+  for (const auto& buffer : output.buffers) pairs.insert(pairs.end(), buffer->begin(), buffer->end());
+  sort_unique_pairs(pairs);
+  return pairs;
 }
 
 }  // namespace recoil::sim
