@@ -73,7 +73,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
          << row["type"].get<std::string>();
     if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
     if (row.contains("collision_triangles") && row["collision_triangles"] != row["surface_triangles"])
-      text << " (collision " << row["collision_triangles"] << ", offset outward by "
+      text << " (collision " << row["collision_triangles"] << ", offset outward by up to "
            << row["collision_offset"].get<double>() * 1e3 << " mm)";
     if (row.contains("tets"))
       text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes, mass " << row["mass"].get<double>() << " kg";

@@ -15,22 +15,27 @@ namespace recoil::sim {
 
 namespace {
 
-// Offset passes: the first moves by the deviation, later ones by what the
-// bending left outside (a few per mille of it), until that is below
-// kSettledShare of the offset so far.
+// Offset passes: the first moves each vertex by its deviation, later ones by
+// what the bending left outside, until that is below kSettledShare of the
+// largest offset so far.
 constexpr int kOffsetPasses = 4;
 constexpr double kSettledShare = 1e-4;
 
 Eigen::Vector3d vertex_of(const TriMesh& m, int v) { return m.vertices.row(v).transpose(); }
 
-// p minus its nearest point on the surface (#F triangles in `scene`), m.
-Eigen::Vector3d from_nearest(const TriMesh& surface, const TriangleScene& scene, const Eigen::Vector3d& p, double radius,
-                             std::vector<int>& near) {
+// p minus its nearest point on the surface (#F triangles in `scene`), m, and
+// the triangle that point lies on.
+struct Nearest {
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  int triangle = -1;
+};
+Nearest from_nearest(const TriMesh& surface, const TriangleScene& scene, const Eigen::Vector3d& p, double radius,
+                     std::vector<int>& near) {
   for (int grow = 0; grow < 64; ++grow, radius *= 2.0) {
     near.clear();
     scene.triangles_near(p, radius, near);
     double best = std::numeric_limits<double>::infinity();
-    Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+    Nearest out;
     for (int f : near) {
       const Eigen::Vector3d q = closest_point_on_triangle(p, vertex_of(surface, surface.triangles(f, 0)),
                                                           vertex_of(surface, surface.triangles(f, 1)),
@@ -38,12 +43,12 @@ Eigen::Vector3d from_nearest(const TriMesh& surface, const TriangleScene& scene,
                                     .point;
       if ((p - q).norm() < best) {
         best = (p - q).norm();
-        offset = p - q;
+        out = {p - q, f};
       }
     }
-    if (best <= radius) return offset;
+    if (best <= radius) return out;
   }
-  return Eigen::Vector3d::Zero();  // unreachable for a non-empty surface: the radius outgrows it
+  return {};  // unreachable for a non-empty surface: the radius outgrows it
 }
 
 // Area-weighted vertex normals, unit (#V by 3).
@@ -60,6 +65,55 @@ Points vertex_normals(const TriMesh& m) {
     if (length > 0.0) n.row(v) /= length;
   }
   return n;
+}
+
+// The simplified surface `simple` of `mesh`, each vertex moved out along its
+// original normal until every original vertex is inside it. An original
+// vertex standing out of its nearest simplified triangle by a distance a
+// along its own normal (edge collapses may fold a few small triangles over,
+// so their winding cannot say which side is out) moves that triangle's
+// vertices out by a; where the surface bends the face moves a little less,
+// so what is left outside is measured and moved again. Each part of the
+// surface thus moves by its own deviation: a thin part lost in the
+// simplification (a finger) does not push the whole body off the ground.
+CollisionProxy offset_outward(EmbreeDevice& device, const TriMesh& mesh, const Points& mesh_normals,
+                              const SimplifiedMesh& simple) {
+  CollisionProxy out;
+  out.simplified = true;
+  out.surface = simple.mesh;
+  const int n = out.surface.num_vertices();
+  const double extent = bounding_box(mesh).extent().maxCoeff();
+  const double radius = std::max(2.0 * simple.relative_error * extent, 1e-6 * extent);
+  Points normals(n, 3);
+  for (int v = 0; v < n; ++v) normals.row(v) = mesh_normals.row(simple.source[v]);
+  Eigen::VectorXd moved = Eigen::VectorXd::Zero(n);  // m, along `normals`
+  TriangleScene scene(device, out.surface.vertices, out.surface.triangles, /*dynamic=*/true);
+  std::vector<int> near;
+  for (int pass = 0; pass < kOffsetPasses; ++pass) {
+    // Only a vertex outside the simplified volume counts (an inner part of a
+    // many-shelled CAD model sits inside it whatever its normal says); the
+    // winding number decides, for the vertices that would move something.
+    const WindingNumberTree winding(out.surface);
+    Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
+    for (int v = 0; v < mesh.num_vertices(); ++v) {
+      const Nearest q = from_nearest(out.surface, scene, vertex_of(mesh, v), radius, near);
+      if (q.triangle < 0) continue;
+      const double along = mesh_normals.row(v).dot(q.offset);
+      double least = along;
+      for (int k = 0; k < 3; ++k) least = std::min(least, step[out.surface.triangles(q.triangle, k)]);
+      if (!(along > least) || std::abs(winding(vertex_of(mesh, v))) >= 0.5) continue;
+      for (int k = 0; k < 3; ++k) {
+        double& s = step[out.surface.triangles(q.triangle, k)];
+        s = std::max(s, along);
+      }
+    }
+    if (!(step.maxCoeff() > kSettledShare * moved.maxCoeff())) break;
+    moved += step;
+    out.surface.vertices += step.asDiagonal() * normals;
+    scene.update_vertices(out.surface.vertices);
+  }
+  out.deviation = n > 0 ? moved.maxCoeff() : 0.0;
+  return out;
 }
 
 }  // namespace
@@ -79,48 +133,13 @@ int collision_budget(const CollisionSurfaceDesc& desc, const TriMesh& mesh, doub
 }
 
 CollisionProxy make_collision_proxy(EmbreeDevice& device, const TriMesh& mesh, int max_triangles) {
-  CollisionProxy out;
-  if (max_triangles <= 0 || mesh.num_triangles() <= max_triangles) {
-    out.surface = mesh;
-    return out;
-  }
-  const SimplifiedMesh simple = simplify_mesh(mesh, max_triangles);
-  if (simple.mesh.num_triangles() >= mesh.num_triangles() || simple.mesh.empty()) {
-    out.surface = mesh;
-    return out;
-  }
-  out.simplified = true;
-  out.surface = simple.mesh;
-
-  // The deviation: the farthest any original vertex stands out of the
-  // simplified surface along its own normal (edge collapses may fold a few
-  // small triangles over, so their winding cannot say which side is out).
-  // The simplified surface then moves along the same normals (its vertices
-  // are original ones), which shifts faces a little less where the surface
-  // bends: what is left outside is measured and moved again.
-  const double extent = bounding_box(mesh).extent().maxCoeff();
-  const double radius = std::max(2.0 * simple.relative_error * extent, 1e-6 * extent);
+  CollisionProxy kept;
+  kept.surface = mesh;
+  if (max_triangles <= 0 || mesh.num_triangles() <= max_triangles) return kept;
   const Points mesh_normals = vertex_normals(mesh);
-  Points normals(out.surface.num_vertices(), 3);
-  for (int v = 0; v < out.surface.num_vertices(); ++v) normals.row(v) = mesh_normals.row(simple.source[v]);
-  TriangleScene scene(device, out.surface.vertices, out.surface.triangles, /*dynamic=*/true);
-  std::vector<int> near;
-  for (int pass = 0; pass < kOffsetPasses; ++pass) {
-    // Only a vertex outside the simplified volume counts (an inner part of a
-    // many-shelled CAD model sits inside it whatever its normal says); the
-    // winding number decides, for the vertices that would raise the offset.
-    const WindingNumberTree winding(out.surface);
-    double outside = 0.0;
-    for (int v = 0; v < mesh.num_vertices(); ++v) {
-      const double along = mesh_normals.row(v).dot(from_nearest(out.surface, scene, vertex_of(mesh, v), radius, near));
-      if (along > outside && std::abs(winding(vertex_of(mesh, v))) < 0.5) outside = along;
-    }
-    if (!(outside > kSettledShare * out.deviation)) break;
-    out.deviation += outside;
-    out.surface.vertices += outside * normals;
-    scene.update_vertices(out.surface.vertices);
-  }
-  return out;
+  const SimplifiedMesh simple = simplify_mesh(mesh, max_triangles);
+  if (simple.mesh.num_triangles() >= mesh.num_triangles() || simple.mesh.empty()) return kept;
+  return offset_outward(device, mesh, mesh_normals, simple);
 }
 
 }  // namespace recoil::sim

@@ -1,7 +1,7 @@
 #pragma once
 // The collision surface of a body: for a mesh finer than the simulation
-// needs, a simplified copy (sim/geometry/mesh_simplify.h) pushed outward by
-// its measured deviation, so that the original (the render surface) stays
+// needs, a simplified copy (sim/geometry/mesh_simplify.h) pushed outward,
+// each part by its own measured deviation, so that the original (the render surface) stays
 // inside what contact sees and never visibly sinks into the ground or into
 // another body. A mesh already coarse enough is its own collision surface.
 #include "sim/geometry/tri_mesh.h"
@@ -27,7 +27,8 @@ struct CollisionProxy {
   TriMesh surface;         // what contact sees (a copy of the mesh when not simplified)
   bool simplified = false;
   // How far the original's vertices stood outside the simplified surface, m:
-  // the offset along the vertex normals that puts them inside it.
+  // the largest offset along the vertex normals that put them inside it
+  // (each collision vertex moves by what its own neighbourhood needed).
   double deviation = 0.0;
 };
 
