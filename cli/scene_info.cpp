@@ -11,6 +11,15 @@
 #include "sim/world.h"
 
 namespace recoil::cli {
+namespace {
+
+// How far the collision surface (#V by 3) reaches below the drawn one
+// (#V by 3) along `up` (unit), m: what a body at rest floats above the ground.
+double collision_below(const sim::Points& drawn, const sim::Points& collision, const Eigen::Vector3d& up) {
+  return (drawn * up).minCoeff() - (collision * up).minCoeff();
+}
+
+}  // namespace
 
 int print_scene_info(const std::filesystem::path& file, bool as_json) {
   const SceneDesc scene = load_scene(file);
@@ -20,6 +29,9 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
   } catch (const Error& e) {
     throw scene_error(e, scene);
   }
+  // Heights are measured against gravity (+Y without it).
+  const Eigen::Vector3d& g = scene.world.gravity;
+  const Eigen::Vector3d up = g.norm() > 0.0 ? Eigen::Vector3d(-g.normalized()) : Eigen::Vector3d::UnitY();
   nlohmann::json bodies = nlohmann::json::array();
   for (const SceneBody& b : scene.bodies) {
     nlohmann::json row = {{"name", b.name}, {"type", to_string(b.type)}};
@@ -35,6 +47,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
       row["surface_triangles"] = drawn.num_triangles();
       row["collision_triangles"] = body.surface.num_triangles();
       row["collision_offset"] = body.collision_deviation;
+      row["collision_below"] = collision_below(drawn.vertices, body.surface.vertices, up);
       row["nodes"] = body.num_nodes;
       row["tets"] = body.rest.num_tets();
       row["mass"] = body.mass.sum();
@@ -46,6 +59,9 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
       row["surface_triangles"] = r.mesh.num_triangles();
       row["collision_triangles"] = body.triangles.rows();
       row["collision_offset"] = body.collision_deviation;
+      const Eigen::Matrix3d rotation = body.rotation();
+      const sim::Points& drawn = body.render_local.rows() > 0 ? body.render_local : body.local;
+      row["collision_below"] = collision_below(drawn * rotation.transpose(), body.local * rotation.transpose(), up);
     }
     if (b.type != SceneBodyType::plane) row["open_mesh"] = b.open_mesh;
     bodies.push_back(row);
@@ -74,7 +90,8 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
     if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
     if (row.contains("collision_triangles") && row["collision_triangles"] != row["surface_triangles"])
       text << " (collision " << row["collision_triangles"] << ", offset outward by up to "
-           << row["collision_offset"].get<double>() * 1e3 << " mm)";
+           << row["collision_offset"].get<double>() * 1e3 << " mm, " << row["collision_below"].get<double>() * 1e3
+           << " mm below it)";
     if (row.contains("tets"))
       text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes, mass " << row["mass"].get<double>() << " kg";
     if (row.value("open_mesh", false)) text << " (open mesh: inside by winding number)";

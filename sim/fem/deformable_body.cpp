@@ -14,8 +14,6 @@ namespace recoil::sim {
 
 namespace {
 
-constexpr double kDegrees = 3.14159265358979323846 / 180.0;
-
 // The boundary of a tet mesh as a compact surface (interior nodes dropped).
 TriMesh compact_boundary(const TetMesh& tets) {
   const TriMesh full = boundary_surface(tets);
@@ -36,13 +34,6 @@ TriMesh compact_boundary(const TetMesh& tets) {
 }
 
 }  // namespace
-
-Eigen::Matrix3d Transform::rotation_matrix() const {
-  return (Eigen::AngleAxisd(rotation.z() * kDegrees, Eigen::Vector3d::UnitZ()) *
-          Eigen::AngleAxisd(rotation.y() * kDegrees, Eigen::Vector3d::UnitY()) *
-          Eigen::AngleAxisd(rotation.x() * kDegrees, Eigen::Vector3d::UnitX()))
-      .toRotationMatrix();
-}
 
 DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevice& device, const std::string& where,
                                      double margin) {

@@ -15,19 +15,11 @@
 #include "sim/fem/material.h"
 #include "sim/geometry/embedding.h"
 #include "sim/geometry/tet_mesh.h"
+#include "sim/geometry/transform.h"
 
 namespace recoil::sim {
 
 class EmbreeDevice;
-
-// A scene body's `transform`: p_world = R (scale .* p) + position with
-// R = Rz Ry Rx (Euler degrees applied about world x, then y, then z).
-struct Transform {
-  Eigen::Vector3d position = Eigen::Vector3d::Zero();  // m
-  Eigen::Vector3d rotation = Eigen::Vector3d::Zero();  // degrees about x, y, z
-  Eigen::Vector3d scale = Eigen::Vector3d::Ones();
-  Eigen::Matrix3d rotation_matrix() const;
-};
 
 // A world-space box at the start; nodes inside (inclusive) are held fixed.
 struct PinBox {
@@ -45,7 +37,7 @@ struct DeformableBodyDesc {
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s, initial, every node
   std::optional<PinBox> pinned;
   // Contact (consumed by the World's contact stage).
-  double static_friction = 0.5;   // see FrictionDesc in sim/world_desc.h
+  double static_friction = 0.5;   // see FrictionDesc in sim/rigid/rigid_body_desc.h
   double kinetic_friction = 0.5;
   bool self_contact = true;
   CollisionSurfaceDesc collision;

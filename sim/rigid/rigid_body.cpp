@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "sim/collision/collision_proxy.h"
+#include "sim/fem/deformable_body.h"
 #include "sim/geometry/skew.h"
 #include "sim/rigid/mass_properties.h"
 

@@ -18,7 +18,7 @@
 #include <string>
 
 #include "sim/geometry/tri_mesh.h"
-#include "sim/world_desc.h"
+#include "sim/rigid/rigid_body_desc.h"
 
 namespace recoil::sim {
 

@@ -8,8 +8,8 @@
 #include <random>
 #include <string>
 
-#include "sim/solver/fem_problem.h"
-#include "sim/solver/problem_builders.h"
+#include "tests/fixtures/fem_problem.h"
+#include "tests/fixtures/problem_builders.h"
 #include "tests/bench/bench.h"
 
 namespace recoil::bench {

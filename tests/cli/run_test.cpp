@@ -248,6 +248,9 @@ TEST(DropCommand, CollisionBudgetIsRecordedAndReported) {
   EXPECT_EQ(body["surface_triangles"], 3674);
   EXPECT_LE(body["collision_triangles"].get<int>(), 800);
   EXPECT_GT(body["collision_offset"].get<double>(), 0.0);
+  // How far it reaches below the drawn mesh: some of the offset, never more.
+  EXPECT_GE(body["collision_below"].get<double>(), 0.0);
+  EXPECT_LE(body["collision_below"].get<double>(), body["collision_offset"].get<double>() + 1e-12);
   EXPECT_EQ(run_recoil("drop " + shell_quote(bunny) + " --collision-triangles 800 --collision-edge 0.01").exit_code, 2);
 }
 

@@ -8,7 +8,7 @@
 
 #include "sim/solver/constraint_evaluation.h"
 #include "sim/solver/contact_rows_ops.h"
-#include "sim/solver/problem_builders.h"
+#include "tests/fixtures/problem_builders.h"
 
 namespace recoil::sim {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <iostream>
 
-#include "sim/solver/problem_builders.h"
+#include "tests/fixtures/problem_builders.h"
 #include "tests/sim/solver/solver_test_support.h"
 
 namespace recoil::sim {

@@ -9,7 +9,7 @@
 #include <random>
 
 #include "sim/solver/contact_rows_ops.h"
-#include "sim/solver/problem_builders.h"
+#include "tests/fixtures/problem_builders.h"
 #include "tests/sim/solver/solver_test_support.h"
 
 namespace recoil::sim {

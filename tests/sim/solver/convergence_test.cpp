@@ -8,9 +8,9 @@
 #include <limits>
 #include <cmath>
 
-#include "sim/solver/fem_problem.h"
+#include "tests/fixtures/fem_problem.h"
 #include "sim/solver/kkt_residual.h"
-#include "sim/solver/problem_builders.h"
+#include "tests/fixtures/problem_builders.h"
 #include "tests/sim/solver/solver_test_support.h"
 
 namespace recoil::sim {
