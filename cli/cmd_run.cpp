@@ -1,8 +1,13 @@
 // `recoil run SCENE.json`: options and reporting; parsing is in
 // cli/scene_parser.cpp and the frame loop in cli/scene_runner.cpp.
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+
 #include "cli/commands.h"
 #include "cli/run_options.h"
 #include "cli/scene_parser.h"
+#include "core/error.h"
 
 namespace recoil::cli {
 namespace {
@@ -11,6 +16,25 @@ struct RunCommandOptions {
   std::string scene;
   RunOptions run;
 };
+
+// A folder or a mesh given where a scene file belongs: say what to run instead.
+void refuse_non_scene(const std::string& path) {
+  namespace fs = std::filesystem;
+  std::error_code ec;
+  if (fs::is_directory(path, ec)) {
+    const fs::path saved = fs::path(path) / "scene.json";
+    throw bad_input(path + ": a folder, not a scene file; " +
+                    (fs::is_regular_file(saved, ec) ? "`recoil run " + saved.string() + "` reruns the scene saved there"
+                                                    : std::string("`recoil run` takes a scene file (JSON)")));
+  }
+  std::ifstream in(path, std::ios::binary);
+  char first = 0;
+  while (in.get(first) && std::isspace(static_cast<unsigned char>(first))) {
+  }
+  if (in && first != '{')
+    throw bad_input(path + ": not a scene file (a scene is a JSON object); for a mesh, `recoil drop " + path +
+                    "` or `recoil turntable " + path + "` builds the scene");
+}
 
 }  // namespace
 
@@ -31,6 +55,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global, Action& action)
       "  recoil run scene.json --video out.mp4                        # needs ffmpeg\n");
   cmd->callback([options, &global, &action] {
     action = [options, &global] {
+      refuse_non_scene(options->scene);
       return execute_run(load_scene(options->scene), options->run, global, "recoil run " + options->scene);
     };
   });

@@ -4,6 +4,7 @@
 #include <iostream>
 
 #include "cli/commands.h"
+#include "cli/usage_error.h"
 #include "core/error.h"
 
 int main(int argc, char** argv) {
@@ -31,7 +32,7 @@ int main(int argc, char** argv) {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
     if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::cerr << "recoil: error: " << e.what() << " (see --help)" << std::endl;
+    std::cerr << "recoil: error: " << cli::usage_error(app, e, std::vector<std::string>(argv + 1, argv + argc)) << std::endl;
     return static_cast<int>(ErrorKind::bad_input);
   }
   try {

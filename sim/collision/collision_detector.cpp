@@ -124,10 +124,10 @@ SelfSearch self_search(const PreparedSurface& s, const RestClearance& clearance,
   return out;
 }
 
-// Each edge's x0 box padded by margin/2 plus its motion: against another
-// surface its absolute motion (`self` null), against its own surface its
-// motion with respect to the surface (SelfSearch), the larger of its two
-// vertices'; for the edges listed (all when `only` is null).
+// Each edge's x0 box padded by margin/2 plus its motion, the larger of its
+// two vertices': against another surface (`self` null) every edge with its
+// absolute motion; against its own surface the searched edges only, with
+// their motion with respect to the surface (SelfSearch).
 std::vector<Aabb> edge_boxes(const PreparedSurface& s, double margin, const SelfSearch* self) {
   const std::vector<int>* only = self ? &self->edges : nullptr;
   const size_t n = only ? only->size() : s.edges.size();

@@ -1,8 +1,13 @@
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
 #include "tests/test_support.h"
 
 namespace recoil::test {
+
+namespace fs = std::filesystem;
 
 TEST(Cli, HelpAndVersion) {
   const CommandResult help = run_recoil("--help");
@@ -16,6 +21,39 @@ TEST(Cli, HelpAndVersion) {
 TEST(Cli, UnknownCommandIsBadUsage) {
   const CommandResult r = run_recoil("frobnicate");
   EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "recoil: error: unknown command \"frobnicate\"; the commands are run, drop, turntable, info, "
+                   "compare (see --help)\n");
+}
+
+// One line each, with the closest command or option named.
+TEST(Cli, TyposGetADidYouMean) {
+  const CommandResult command = run_recoil("runn scene.json");
+  EXPECT_EQ(command.exit_code, 2);
+  EXPECT_EQ(command.err, "recoil: error: unknown command \"runn\"; did you mean \"run\"? (see --help)\n");
+  const CommandResult option = run_recoil("run scene.json --framez 1-3");
+  EXPECT_EQ(option.exit_code, 2);
+  EXPECT_EQ(option.err, "recoil: error: unknown option --framez; did you mean --frames? (see recoil run --help)\n");
+  const CommandResult missing = run_recoil("drop");
+  EXPECT_EQ(missing.exit_code, 2);
+  EXPECT_EQ(missing.err, "recoil: error: MESH is required (see recoil drop --help)\n");
+}
+
+// `run` given a mesh or a folder says which command to use instead.
+TEST(Cli, RunOnAMeshOrAFolderSaysWhatToRun) {
+  const std::string bunny = source_path("assets/meshes/bunny.obj").string();
+  const CommandResult mesh = run_recoil("run " + shell_quote(bunny));
+  EXPECT_EQ(mesh.exit_code, 2);
+  EXPECT_NE(mesh.err.find("`recoil drop " + bunny + "` or `recoil turntable " + bunny + "`"), std::string::npos)
+      << mesh.err;
+  const fs::path dir = scratch_dir("run_on_folder");
+  const CommandResult empty = run_recoil("run " + shell_quote(dir));
+  EXPECT_EQ(empty.exit_code, 2);
+  EXPECT_NE(empty.err.find("a folder, not a scene file"), std::string::npos) << empty.err;
+  std::ofstream(dir / "scene.json") << "{}";
+  const CommandResult saved = run_recoil("run " + shell_quote(dir));
+  EXPECT_NE(saved.err.find("`recoil run " + (dir / "scene.json").string() + "` reruns the scene saved there"),
+            std::string::npos)
+      << saved.err;
 }
 
 }  // namespace recoil::test

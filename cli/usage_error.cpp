@@ -1,0 +1,51 @@
+#include "cli/usage_error.h"
+
+#include "cli/json_cursor.h"
+
+namespace recoil::cli {
+namespace {
+
+// Long option names ("--frames") of `app` and, for a subcommand, of the
+// top-level options that may follow it.
+std::vector<std::string> long_options(const CLI::App& app) {
+  std::vector<std::string> names;
+  for (const CLI::App* a = &app; a != nullptr; a = a->get_parent())
+    for (const CLI::Option* option : a->get_options())
+      for (const std::string& name : option->get_lnames()) names.push_back("--" + name);
+  return names;
+}
+
+std::string known_list(const std::vector<std::string>& names) {
+  std::string out;
+  for (const std::string& n : names) out += (out.empty() ? "" : ", ") + n;
+  return out;
+}
+
+}  // namespace
+
+std::string usage_error(const CLI::App& app, const CLI::ParseError& error, const std::vector<std::string>& args) {
+  std::vector<std::string> commands;
+  for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) commands.push_back(sub->get_name());
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
+  // The first word that is neither an option nor a known command, before any
+  // command was recognised: a mistyped command.
+  if (chosen.empty() && !args.empty() && args[0].rfind('-', 0) != 0) {
+    const std::string guess = near_miss(args[0], commands);
+    return "unknown command \"" + args[0] + "\"; " +
+           (guess.empty() ? "the commands are " + known_list(commands) : "did you mean \"" + guess + "\"?") +
+           " (see --help)";
+  }
+  const CLI::App& command = chosen.empty() ? app : *chosen.front();
+  const std::vector<std::string> options = long_options(command);
+  const std::string see = " (see recoil " + (chosen.empty() ? "" : command.get_name() + " ") + "--help)";
+  for (const std::string& arg : args) {
+    if (arg.rfind("--", 0) != 0 || arg == "--") continue;
+    const std::string name = arg.substr(0, arg.find('='));
+    if (std::find(options.begin(), options.end(), name) != options.end()) continue;
+    const std::string guess = near_miss(name, options);
+    return "unknown option " + name + (guess.empty() ? "" : "; did you mean " + guess + "?") + see;
+  }
+  return std::string(error.what()) + see;
+}
+
+}  // namespace recoil::cli
