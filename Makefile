@@ -10,7 +10,7 @@ CMAKE_FLAGS ?=
 # this only when it creates a build folder, so existing ones keep theirs.
 export CMAKE_GENERATOR ?= Ninja
 
-.PHONY: all deps build demo test test-sanitize fuzz-build fuzz fuzz-smoke bench clean
+.PHONY: all deps build demo test test-sanitize fuzz-build fuzz fuzz-smoke bench validation-doc clean
 
 all: build
 
@@ -69,6 +69,14 @@ fuzz-smoke: fuzz-build
 
 bench: build
 	$(BUILD)/recoil_bench
+
+# docs/validation.md from what the validation suite measures (each test
+# records its results); the page is written even when a check fails, and the
+# target then fails with the suite.
+validation-doc: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target recoil_tests_validation
+	status=0; $(BUILD)/recoil_tests_validation --gtest_output=json:$(BUILD)/validation.json || status=$$?; \
+	  python3 scripts/validation_doc.py $(BUILD)/validation.json docs/validation.md && exit $$status
 
 clean:
 	rm -rf $(BUILD) build-asan $(FUZZ_BUILD)

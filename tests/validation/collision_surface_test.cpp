@@ -7,6 +7,7 @@
 
 #include "tests/scenes/contact_scenes.h"
 #include "tests/validation/contact_helpers.h"
+#include "tests/validation/measured.h"
 
 namespace recoil::sim {
 namespace {
@@ -46,7 +47,7 @@ TEST(CollisionSurface, TheDrawnMeshRestsWithinTheMarginOfTheGround) {
   for (bool deformable : {true, false}) {
     int candidates = 0;
     const double lowest = lowest_drawn_point(deformable, candidates);
-    std::cout << (deformable ? "deformable" : "rigid") << " 81920-triangle sphere at rest: drawn mesh's lowest point "
+    validation::Measured() << (deformable ? "deformable" : "rigid") << " 81920-triangle sphere at rest: drawn mesh's lowest point "
               << lowest * 1e3 << " mm (margin 2 mm), " << candidates << " candidates while falling\n";
     EXPECT_GE(lowest, -0.002);
     EXPECT_EQ(candidates, 0);

@@ -8,6 +8,7 @@
 
 #include "tests/scenes/contact_scenes.h"
 #include "tests/validation/contact_helpers.h"
+#include "tests/validation/measured.h"
 
 namespace recoil::sim {
 namespace {
@@ -41,7 +42,7 @@ void incline_stick(bool deformable) {
   const Eigen::Vector3d c0 = motion(world, 0).center;
   const double penetration = run(world, steps(2.0, dt));
   const double creep = (motion(world, 0).center - c0).dot(downslope(theta));
-  std::cout << (deformable ? "deformable" : "rigid") << " incline stick (tan 0.3, mu 0.5): creep after 2 s "
+  validation::Measured() << (deformable ? "deformable" : "rigid") << " incline stick (tan 0.3, mu 0.5): creep after 2 s "
             << creep * 1e3 << " mm, max penetration " << penetration * 1e3 << " mm\n";
   EXPECT_LT(std::abs(creep), 1e-3);
   EXPECT_LT(penetration, 0.002);
@@ -57,7 +58,7 @@ void incline_slide(bool deformable) {
   const double v2 = motion(world, 0).velocity.dot(downslope(theta)), t2 = world.time();
   const double a = (v2 - v1) / (t2 - t1), expected = g * (std::sin(theta) - mu * std::cos(theta));
   const double err = std::abs(a - expected) / expected;
-  std::cout << (deformable ? "deformable" : "rigid") << " incline slide (tan 0.5, mu_k 0.3): a = " << a
+  validation::Measured() << (deformable ? "deformable" : "rigid") << " incline slide (tan 0.5, mu_k 0.3): a = " << a
             << " m/s^2, expected " << expected << ", relative error " << err << "\n";
   EXPECT_LT(err, 0.03);
 }
@@ -92,7 +93,7 @@ TEST(ContactValidation, SlideToStopAndConeIsotropy) {
   const double dx = stopping_distance(Eigen::Vector3d::UnitX(), v0, mu, creep_x);
   const double dd = stopping_distance(Eigen::Vector3d(1.0, 0.0, 1.0), v0, mu, creep_d);
   const double err = std::abs(dx - expected) / expected, iso = std::abs(dd - dx) / dx;
-  std::cout << "slide to stop: distance " << dx << " m, expected " << expected << ", relative error " << err
+  validation::Measured() << "slide to stop: distance " << dx << " m, expected " << expected << ", relative error " << err
             << "; diagonal " << dd << " m, anisotropy " << iso << "; creep after stop " << creep_x * 1e3 << " / "
             << creep_d * 1e3 << " mm\n";
   EXPECT_LT(err, 0.03);
@@ -126,7 +127,7 @@ TEST(ContactValidation, StiffDeformableBlockSlidesToStop) {
       // Implicit Euler takes h v0 / 2 off the distance (v_{n+1} = v_n - mu g h, x += h v_{n+1}).
       const double expected = v0 * v0 / (2.0 * mu * g) - 0.5 * dt * v0;
       const double err = std::abs((stop - c0).x() - expected) / expected;
-      std::cout << "stiff block, E " << youngs_modulus << " Pa, dt " << dt << " s: slid " << (stop - c0).x()
+      validation::Measured() << "stiff block, E " << youngs_modulus << " Pa, dt " << dt << " s: slid " << (stop - c0).x()
                 << " m, expected " << expected << ", relative error " << err << "; speed after " << speed
                 << " m/s, creep " << creep * 1e3 << " mm, height " << stop.y() << " m\n";
       EXPECT_LT(err, 0.03) << youngs_modulus << " Pa, dt " << dt;
@@ -161,7 +162,7 @@ TEST(ContactValidation, RollingSphere) {
   const double a = (v2 - v1) / (t2 - t1), expected = 5.0 / 7.0 * g * std::sin(theta);
   const double err = std::abs(a - expected) / expected;
   const double slip = std::abs(v2 + w2 * radius);  // rolling: v = -w_z r down the slope
-  std::cout << "rolling sphere (15 deg, mu 0.6): a = " << a << " m/s^2, expected " << expected
+  validation::Measured() << "rolling sphere (15 deg, mu 0.6): a = " << a << " m/s^2, expected " << expected
             << ", relative error " << err << ", slip speed " << slip << " m/s (w " << w1 << " -> " << w2 << "), unconverged steps "
             << world.counters().solver_not_converged << "\n";
   EXPECT_LT(err, 0.03);

@@ -10,6 +10,7 @@
 #include "tests/scenes/contact_scenes.h"
 #include "tests/test_support.h"
 #include "tests/validation/contact_helpers.h"
+#include "tests/validation/measured.h"
 
 namespace recoil::sim {
 namespace {
@@ -39,7 +40,7 @@ TEST(ContactValidation, DeformableSphereComesToRest) {
   const Eigen::Vector3d c2 = motion(world, 0).center;
   const double kinetic = world.stats()[0].kinetic_energy;
   const double drift = std::hypot(c2.x() - c1.x(), c2.z() - c1.z()) / 0.5;
-  std::cout << "rest: kinetic / initial potential " << kinetic / potential << ", horizontal drift " << drift * 1e3
+  validation::Measured() << "rest: kinetic / initial potential " << kinetic / potential << ", horizontal drift " << drift * 1e3
             << " mm/s, max penetration " << penetration * 1e3 << " mm\n";
   EXPECT_LT(kinetic, 1e-6 * potential);
   EXPECT_LT(drift, 1e-4);
@@ -64,7 +65,7 @@ TEST(ContactValidation, UndampedBallNeverGainsEnergy) {
     contact_steps += r.active > 0;
     worst = std::max(worst, (total_energy(world, w.gravity) - e0) / scale);
   }
-  std::cout << "bounce: largest energy rise " << worst * 100 << " % of the drop energy over " << contact_steps
+  validation::Measured() << "bounce: largest energy rise " << worst * 100 << " % of the drop energy over " << contact_steps
             << " steps in contact, final energy " << (total_energy(world, w.gravity) - e0) / scale * 100 << " %\n";
   EXPECT_GT(contact_steps, 0);
   EXPECT_LT(worst, 0.01);
@@ -84,7 +85,7 @@ TEST(ContactValidation, AlignedBoxesDoNotFallThroughEachOther) {
   World world(w);
   const double penetration = run(world, steps(1.0, dt));
   const double lower = motion(world, 0).center.y(), upper = motion(world, 1).center.y();
-  std::cout << "aligned boxes: centres " << (upper - lower) * 1e3 << " mm apart after 1 s (size " << size * 1e3
+  validation::Measured() << "aligned boxes: centres " << (upper - lower) * 1e3 << " mm apart after 1 s (size " << size * 1e3
             << " mm), max penetration " << penetration * 1e3 << " mm\n";
   EXPECT_NEAR(upper - lower, size, 0.002);
   EXPECT_LT(penetration, 0.002);
@@ -104,7 +105,7 @@ TEST(ContactValidation, RigidBoxStackStands) {
     drift = std::max(drift, std::hypot(d.x(), d.z()));
   }
   const double top_fell = landed[4].y() - motion(world, 4).center.y();
-  std::cout << "box stack (5 rigid, offset and turned): lateral drift over 5 s " << drift * 1e3 << " mm, top fell "
+  validation::Measured() << "box stack (5 rigid, offset and turned): lateral drift over 5 s " << drift * 1e3 << " mm, top fell "
             << top_fell * 1e3 << " mm, max penetration " << penetration * 1e3 << " mm\n";
   EXPECT_LT(drift, 0.01 * size);
   EXPECT_LT(std::abs(top_fell), 0.01 * size);
@@ -120,7 +121,7 @@ TEST(ContactValidation, JellyStackStands) {
     const Eigen::Vector3d c = motion(world, i).center;
     drift = std::max(drift, std::hypot(c.x(), c.z()));
   }
-  std::cout << "jelly stack (3): lateral drift after 5 s " << drift * 1e3 << " mm, max penetration "
+  validation::Measured() << "jelly stack (3): lateral drift after 5 s " << drift * 1e3 << " mm, max penetration "
             << penetration * 1e3 << " mm\n";
   EXPECT_LT(drift, 0.01 * size);
   EXPECT_LT(penetration, 0.002);
@@ -154,7 +155,7 @@ TEST(ContactValidation, SoftCubeSettlesWithEverySolveConverged) {
     worst_kkt = std::max(worst_kkt, r.solver_kkt);
     sliding = std::max(sliding, r.sliding);
   }
-  std::cout << "soft cube settling: " << unconverged << " of 60 steps unconverged, most restarts " << most_restarts
+  validation::Measured() << "soft cube settling: " << unconverged << " of 60 steps unconverged, most restarts " << most_restarts
             << ", worst kkt " << worst_kkt << " m/s, most sliding contacts " << sliding << "\n";
   EXPECT_GT(sliding, 0) << "the scene must exercise sliding friction";
   EXPECT_EQ(unconverged, 0);
@@ -190,7 +191,7 @@ TEST(ContactValidation, DeterministicAcrossRuns) {
     for (int i = 0; i < 30; ++i) contacts = world.step().contacts;
     hash = state_hash(world);
   }
-  std::cout << "determinism: hash " << std::hex << hashes[0] << " / " << hashes[1] << std::dec << ", contacts at the end "
+  validation::Measured() << "determinism: hash " << std::hex << hashes[0] << " / " << hashes[1] << std::dec << ", contacts at the end "
             << contacts << "\n";
   EXPECT_GT(contacts, 0);
   EXPECT_EQ(hashes[0], hashes[1]);
@@ -212,10 +213,12 @@ TEST(ContactValidation, BunnyPileStaysWithinMargin) {
     inverted += r.inverted_tets;
     penetration = std::max(penetration, r.max_penetration);
   }
-  std::cout << "bunny pile (8): max penetration " << penetration * 1e3 << " mm, inverted tets " << inverted
-            << "; centre heights (m):";
-  for (int b = 0; b < 8; ++b) std::cout << " " << motion(world, b).center.y();
-  std::cout << "\n";
+  {
+    validation::Measured line;
+    line << "bunny pile (8): max penetration " << penetration * 1e3 << " mm, inverted tets " << inverted
+         << "; centre heights (m):";
+    for (int b = 0; b < 8; ++b) line << " " << motion(world, b).center.y();
+  }
   EXPECT_LT(penetration, 0.002);
   EXPECT_EQ(inverted, 0);
 }
@@ -242,7 +245,7 @@ TEST(ContactValidation, RollersPassTheBlockThrough) {
       penetration = std::max(penetration, r.max_penetration);
     }
     const double y = motion(world, 0).center.y();
-    std::cout << "rollers, resolution " << resolution << ": block centre at y = " << y
+    validation::Measured() << "rollers, resolution " << resolution << ": block centre at y = " << y
               << " m after 1 s, max penetration " << penetration * 1e3 << " mm\n";
     EXPECT_LT(y, -0.05) << "resolution " << resolution;  // pulled through the 6 cm gap
     EXPECT_LT(penetration, 0.002) << "resolution " << resolution;

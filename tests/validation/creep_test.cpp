@@ -7,6 +7,7 @@
 
 #include "tests/scenes/contact_scenes.h"
 #include "tests/validation/contact_helpers.h"
+#include "tests/validation/measured.h"
 
 namespace recoil::sim::validation {
 namespace {
@@ -24,7 +25,7 @@ double creep(const WorldDesc& w) {
 
 TEST(Creep, RigidBlockOnSlopeHolds) {
   const double d = creep(cube_on_holding_slope());
-  std::cout << "rigid cube on a 16 degree slope, mu 0.35: creep from 1 s to 10 s " << d * 1e3 << " mm\n";
+  validation::Measured() << "rigid cube on a 16 degree slope, mu 0.35: creep from 1 s to 10 s " << d * 1e3 << " mm\n";
   EXPECT_LT(std::abs(d), 1e-5);
 }
 
@@ -36,7 +37,7 @@ TEST(Creep, DeformableBlockOnSlopeHolds) {
   place_on_incline(b, kHoldingSlope, 0.5 * kBenchCube, 0.0, 0.0);
   w.bodies.push_back(b);
   const double d = creep(w);
-  std::cout << "deformable cube (E 1 MPa) on a 16 degree slope, mu 0.35: creep from 1 s to 10 s " << d * 1e3
+  validation::Measured() << "deformable cube (E 1 MPa) on a 16 degree slope, mu 0.35: creep from 1 s to 10 s " << d * 1e3
             << " mm\n";
   EXPECT_LT(std::abs(d), 1e-5);
 }

@@ -11,6 +11,7 @@
 #include "sim/fem/vibration_modes.h"
 #include "tests/scenes/contact_scenes.h"
 #include "tests/validation/contact_helpers.h"
+#include "tests/validation/measured.h"
 
 namespace recoil::sim {
 namespace {
@@ -37,7 +38,7 @@ TEST(DampingValidation, DampedFreeFallIsExactlyGT) {
     run(world, steps(0.5, w.dt));
     const double v = motion(world, 0).velocity.y(), expected = -kGravity * world.time();
     const double err = std::abs(v - expected) / std::abs(expected);
-    std::cout << "free fall, zeta " << zeta << ": v after " << world.time() << " s = " << v << " m/s, g t = "
+    validation::Measured() << "free fall, zeta " << zeta << ": v after " << world.time() << " s = " << v << " m/s, g t = "
               << -expected << ", relative error " << err << "\n";
     EXPECT_LT(err, 1e-6);
   }
@@ -65,7 +66,7 @@ TEST(DampingValidation, DampedSlideOnInclineMatchesCoulomb) {
     const double a = (n * stv - st * sv) / (n * stt - st * st);
     const double expected = kGravity * (std::sin(theta) - mu * std::cos(theta));
     const double err = std::abs(a - expected) / expected;
-    std::cout << "incline 27 deg, mu 0.35, zeta " << zeta << ": a = " << a << " m/s^2, expected " << expected
+    validation::Measured() << "incline 27 deg, mu 0.35, zeta " << zeta << ": a = " << a << " m/s^2, expected " << expected
               << ", relative error " << err << "\n";
     EXPECT_LT(err, 0.005);
   }
@@ -134,7 +135,7 @@ TEST(DampingValidation, LowestModeDecaysAtTheStatedRatio) {
   const auto [decay, omega_discrete] = decay_and_frequency(modal_step(mode.omega, body.damping_beta, h), h);
   const auto [numerical_decay, unused] = decay_and_frequency(modal_step(mode.omega, 0.0, h), h);
   const double measured_zeta = (measured_decay - numerical_decay) / mode.omega;
-  std::cout << "lowest mode: omega " << mode.omega << " rad/s (measured " << measured_omega
+  validation::Measured() << "lowest mode: omega " << mode.omega << " rad/s (measured " << measured_omega
             << "), decay " << measured_decay << " 1/s against " << decay << " predicted for zeta " << zeta
             << " under implicit Euler (" << numerical_decay << " of it numerical); measured zeta " << measured_zeta
             << "\n";
@@ -165,7 +166,7 @@ TEST(DampingValidation, LowestModeMatchesADenseEigenSolve) {
   while (lambdas[first] < 1e-6 * lambdas[lambdas.size() - 1]) ++first;
   const VibrationMode mode =
       lowest_vibration_mode({&body.rest, &body.elements, body.material.model, body.lame, &body.mass, &body.pinned});
-  std::cout << "dense: " << first << " zero modes, omega_1 " << std::sqrt(lambdas[first]) << " rad/s; subspace "
+  validation::Measured() << "dense: " << first << " zero modes, omega_1 " << std::sqrt(lambdas[first]) << " rad/s; subspace "
             << mode.omega << " rad/s\n";
   EXPECT_EQ(first, 6);
   EXPECT_NEAR(mode.omega, std::sqrt(lambdas[first]), 1e-6 * mode.omega);

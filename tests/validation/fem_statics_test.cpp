@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "tests/sim/fem/fem_scenes.h"
+#include "tests/validation/measured.h"
 
 namespace recoil::sim {
 namespace {
@@ -44,7 +45,7 @@ TEST(FemStatics, HangingBarLowersItsCentreOfMassByRhoGL2Over3E) {
     const int steps = settle(world, 1e-6, 400);
     const double measured = y0 - world.stats()[0].center_of_mass.y();
     const double expected = rho * kG * L * L / (3.0 * E);
-    std::cout << (model == MaterialModel::corotated ? "corotated" : "neo-hookean")
+    validation::Measured() << (model == MaterialModel::corotated ? "corotated" : "neo-hookean")
               << " hanging bar: centre of mass lowered " << measured << " m, expected rho g L^2/(3E) = " << expected
               << " m, error " << 100.0 * (measured - expected) / expected << " % after " << steps << " steps\n";
     EXPECT_NEAR(measured, expected, 0.1 * expected);
@@ -80,7 +81,7 @@ TEST(FemStatics, CantileverDeflectionApproachesEulerBernoulli) {
       }
     const double measured = sum / count;
     ratios.push_back(measured / expected);
-    std::cout << "cantilever at resolution " << resolution << " (" << world.stats()[0].num_tets << " tets): tip "
+    validation::Measured() << "cantilever at resolution " << resolution << " (" << world.stats()[0].num_tets << " tets): tip "
               << measured << " m, Euler-Bernoulli " << expected << " m, ratio " << ratios.back() << " after " << steps
               << " steps\n";
   }

@@ -10,6 +10,7 @@
 #include <map>
 
 #include "tests/scenes/contact_scenes.h"
+#include "tests/validation/measured.h"
 
 namespace recoil::sim {
 namespace {
@@ -26,7 +27,7 @@ TEST(SelfContact, AFineSurfaceFallingFreelyHasNoCandidates) {
   b.self_contact = true;
   w.bodies.push_back(b);
   World world(w);
-  std::cout << "falling sphere: " << world.body(0).surface.num_triangles() << " triangles\n";
+  validation::Measured() << "falling sphere: " << world.body(0).surface.num_triangles() << " triangles\n";
   int most = 0;
   for (int i = 0; i < 50; ++i) {
     const StepReport r = world.step();
@@ -149,7 +150,7 @@ TEST(SelfContact, ASoftUFoldedShutDoesNotPassThroughItself) {
   int unconverged = 0;
   const int without = squeezed_u_crossings(false, penetration, unconverged);
   const int with = squeezed_u_crossings(true, penetration, unconverged);
-  std::cout << "squeezed U: " << without << " edges through its own surface without self-contact, " << with
+  validation::Measured() << "squeezed U: " << without << " edges through its own surface without self-contact, " << with
             << " with it (max penetration " << penetration * 1e3 << " mm, " << unconverged << " unconverged steps)\n";
   EXPECT_GT(without, 0) << "the squeeze must bring the arms together";
   EXPECT_EQ(with, 0);

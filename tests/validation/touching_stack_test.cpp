@@ -5,6 +5,7 @@
 
 #include "tests/scenes/contact_scenes.h"
 #include "tests/validation/contact_helpers.h"
+#include "tests/validation/measured.h"
 
 namespace recoil::sim::validation {
 namespace {
@@ -25,7 +26,7 @@ TEST(TouchingStack, FourRigidCubesStandTenSeconds) {
     penetration = std::max(penetration, r.max_penetration);
     drift = std::max(drift, (motion(world, 3).center - start).norm());
   }
-  std::cout << "rigid touching stack (4 cubes, zero gap, 10 s): top moved " << drift * 1e3 << " mm, " << unconverged
+  validation::Measured() << "rigid touching stack (4 cubes, zero gap, 10 s): top moved " << drift * 1e3 << " mm, " << unconverged
             << " of " << stepped << " steps unconverged, max penetration " << penetration * 1e3 << " mm\n";
   EXPECT_LT(drift, 1e-4);
   EXPECT_EQ(unconverged, 0);
