@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <iomanip>
 #include <sstream>
 #include <thread>
 
@@ -182,7 +183,11 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, fps);
 
   const InterruptScope interrupts;
-  Progress progress(global, "run", static_cast<int>(selected.size()));
+  // Labelled by the command that built the scene ("recoil drop ..." -> drop).
+  const std::string command_word = job.command.substr(0, job.command.find(' ', 7));
+  Progress progress(global, command_word.rfind("recoil ", 0) == 0 ? command_word.substr(7) : "run",
+                    static_cast<int>(selected.size()));
+  const auto run_start = Clock::now();
   RunResult result;
   for (const SceneBody& body : scene.bodies)
     if (body.open_mesh) result.open_meshes.push_back(body.name);
@@ -218,6 +223,12 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
         result.message = describe_failure(r, k, what.str(), scene);
       }
       if (result.failed) break;
+      if (progress.due()) {
+        std::ostringstream life;
+        life << std::fixed << std::setprecision(3) << "t = " << world->time() << " s, step " << r.step << ", "
+             << std::setprecision(0) << ms_since(run_start) / 1000.0 << " s";
+        progress.working(life.str());
+      }
     }
     if (result.failed || pending_interrupt()) break;
     if (next >= selected.size() || selected[next] != k) continue;
