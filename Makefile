@@ -75,6 +75,7 @@ bench: build
 # target then fails with the suite.
 validation-doc: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target recoil_tests_validation
+	rm -f $(BUILD)/validation.json
 	status=0; $(BUILD)/recoil_tests_validation --gtest_output=json:$(BUILD)/validation.json || status=$$?; \
 	  python3 scripts/validation_doc.py $(BUILD)/validation.json docs/validation.md && exit $$status
 

@@ -23,7 +23,7 @@ int run_drop(const DropCommandOptions& options, const GlobalOptions& global) {
   }
   SceneDesc scene = parse_scene(document, options.save_scene.empty() ? "drop" : options.save_scene,
                                 std::filesystem::current_path());
-  return execute_run(std::move(scene), options.run, global, "recoil drop " + options.drop.meshes.front());
+  return execute_run(std::move(scene), options.run, global, "drop", "recoil drop " + options.drop.meshes.front());
 }
 
 }  // namespace

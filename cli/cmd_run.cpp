@@ -27,13 +27,18 @@ void refuse_non_scene(const std::string& path) {
                     (fs::is_regular_file(saved, ec) ? "`recoil run " + saved.string() + "` reruns the scene saved there"
                                                     : std::string("`recoil run` takes a scene file (JSON)")));
   }
+  if (!fs::is_regular_file(path, ec)) return;  // missing, a pipe: the parser says what is wrong
   std::ifstream in(path, std::ios::binary);
+  std::string head(3, '\0');
+  in.read(head.data(), 3);
+  if (head != "\xEF\xBB\xBF") in.seekg(0);  // a UTF-8 byte-order mark, which JSON readers skip
+  in.clear();
   char first = 0;
   while (in.get(first) && std::isspace(static_cast<unsigned char>(first))) {
   }
   if (in && first != '{')
     throw bad_input(path + ": not a scene file (a scene is a JSON object); for a mesh, `recoil drop " + path +
-                    "` or `recoil turntable " + path + "` builds the scene");
+                    "` builds a scene of it and `recoil turntable " + path + "` renders it");
 }
 
 }  // namespace
@@ -56,7 +61,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global, Action& action)
   cmd->callback([options, &global, &action] {
     action = [options, &global] {
       refuse_non_scene(options->scene);
-      return execute_run(load_scene(options->scene), options->run, global, "recoil run " + options->scene);
+      return execute_run(load_scene(options->scene), options->run, global, "run", "recoil run " + options->scene);
     };
   });
 }

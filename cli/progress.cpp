@@ -41,7 +41,8 @@ void Progress::update(int done) {
     const double elapsed = seconds_between(m_first_time, now);
     const double rate = elapsed > 0 && done > m_first_done ? (done - m_first_done) / elapsed : 0.0;
     const nlohmann::json line = {{"command", m_label}, {"event", "progress"}, {"done", done}, {"total", m_total},
-                                 {"rate", rate},        {"eta_s", rate > 0 ? (m_total - done) / rate : 0.0}};
+                                 {"rate", rate},        {"eta_s", rate > 0 ? nlohmann::json((m_total - done) / rate)
+                                                                             : nlohmann::json(nullptr)}};
     std::fprintf(stderr, "%s\n", line.dump().c_str());
     return;
   }

@@ -71,7 +71,8 @@ void add_run_options(CLI::App& command, RunOptions& options) {
   add_render_options(command, options.render);
 }
 
-int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions& global, const std::string& command_line) {
+int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions& global, const std::string& command_name,
+                const std::string& command_line) {
   RunJob job;
   if (!options.solver.empty()) {
     scene.world.contact.solver.method = options.solver == "pgs"        ? sim::SolverMethod::pgs
@@ -89,6 +90,7 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
   job.render = !options.no_render;
   job.resume = options.resume;
   job.strict = options.strict;
+  job.label = command_name;
   job.command = command_line;
   job.scene = std::move(scene);
   const RunResult result = run_scene(job, global);

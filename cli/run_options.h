@@ -30,6 +30,7 @@ void add_run_options(CLI::App& command, RunOptions& options);
 
 // Applies the options to `scene` and runs it (default output folder:
 // output/<scene name>/). Returns the exit code.
-int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions& global, const std::string& command_line);
+int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions& global, const std::string& command_name,
+                const std::string& command_line);
 
 }  // namespace recoil::cli

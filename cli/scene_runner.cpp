@@ -183,10 +183,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, fps);
 
   const InterruptScope interrupts;
-  // Labelled by the command that built the scene ("recoil drop ..." -> drop).
-  const std::string command_word = job.command.substr(0, job.command.find(' ', 7));
-  Progress progress(global, command_word.rfind("recoil ", 0) == 0 ? command_word.substr(7) : "run",
-                    static_cast<int>(selected.size()));
+  Progress progress(global, job.label, static_cast<int>(selected.size()));
   const auto run_start = Clock::now();
   RunResult result;
   for (const SceneBody& body : scene.bodies)

@@ -25,6 +25,7 @@ struct RunJob {
   bool resume = false;                    // keep frames already on disk
   bool strict = false;                    // a solve that did not converge fails the run (exit 3)
   std::string command;                    // the command line, for run.json
+  std::string label = "run";              // the command, for the progress bar
 };
 
 // "12 of 750 solves did not converge (worst KKT residual 3.1e-04 m/s); ..."

@@ -27,11 +27,18 @@ std::string usage_error(const CLI::App& app, const CLI::ParseError& error, const
   std::vector<std::string> commands;
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) commands.push_back(sub->get_name());
   const std::vector<CLI::App*> chosen = app.get_subcommands();
-  // The first word that is neither an option nor a known command, before any
-  // command was recognised: a mistyped command.
-  if (chosen.empty() && !args.empty() && args[0].rfind('-', 0) != 0) {
-    const std::string guess = near_miss(args[0], commands);
-    return "unknown command \"" + args[0] + "\"; " +
+  // Before any command was recognised, the first word past the top-level
+  // options (and their values) is a mistyped command.
+  size_t word = 0;
+  while (word < args.size() && args[word].rfind('-', 0) == 0 && args[word] != "--") {
+    const std::string name = args[word].substr(0, args[word].find('='));
+    const CLI::Option* option = app.get_option_no_throw(name);
+    const bool takes_value = option != nullptr && option->get_type_size() > 0 && name.size() == args[word].size();
+    word += takes_value ? 2 : 1;
+  }
+  if (chosen.empty() && word < args.size() && args[word] != "--") {
+    const std::string guess = near_miss(args[word], commands);
+    return "unknown command \"" + args[word] + "\"; " +
            (guess.empty() ? "the commands are " + known_list(commands) : "did you mean \"" + guess + "\"?") +
            " (see --help)";
   }
@@ -39,7 +46,8 @@ std::string usage_error(const CLI::App& app, const CLI::ParseError& error, const
   const std::vector<std::string> options = long_options(command);
   const std::string see = " (see recoil " + (chosen.empty() ? "" : command.get_name() + " ") + "--help)";
   for (const std::string& arg : args) {
-    if (arg.rfind("--", 0) != 0 || arg == "--") continue;
+    if (arg == "--") break;  // what follows is positional
+    if (arg.rfind("--", 0) != 0) continue;
     const std::string name = arg.substr(0, arg.find('='));
     if (std::find(options.begin(), options.end(), name) != options.end()) continue;
     const std::string guess = near_miss(name, options);

@@ -31,7 +31,9 @@ def main():
     for suite in report["testsuites"]:
         lines += ["", f"## {suite['name']}", ""]
         for test in suite["testsuite"]:
-            status = "failed" if test.get("failures") else ("skipped" if test.get("result") == "SKIPPED" else "passed")
+            result = test.get("result")
+            status = ("failed" if test.get("failures") else "skipped" if result == "SKIPPED"
+                      else "disabled" if result == "SUPPRESSED" or test.get("status") == "NOTRUN" else "passed")
             lines.append(f"- **{test['name']}**: {status} ({test['time']})")
             measured = sorted((k for k in test if k.startswith("measured_")), key=lambda k: int(k.split("_")[1]))
             lines += [f"  - {test[k]}" for k in measured]

@@ -21,7 +21,7 @@ struct CollisionDetector::Impl {
     std::vector<std::array<int, 2>> edge_opposite;  // edge_opposites(triangles, edges)
     std::unique_ptr<TriangleScene> faces;
     std::unique_ptr<BoxScene> edge_boxes;       // padded by the edges' motion, against other surfaces
-    std::unique_ptr<BoxScene> self_edge_boxes;  // padded by their deformation motion, keyed by their vertices
+    std::unique_ptr<BoxScene> self_edge_boxes;  // the searched edges, padded by self_motion, keyed by their vertices
     std::unique_ptr<RestClearance> clearance;   // of `rest_shape`, for self-contact surfaces
     const Points* rest_shape = nullptr;
   };
@@ -66,9 +66,11 @@ void parallel_chunks(size_t n, int threads, const Chunk& work, std::vector<Conta
 // a rigid part (R - I) x0 + t and a residual e, so |m_i - m_j| <= e_i + e_j +
 // theta |x0_i - x0_j| with theta = |R - I|, and |x0_i - x0_j| <= d + 2 l for
 // primitives d apart with edges at most l long; solved for d, that gives
-// q = (e + theta (l + margin / 2)) / (1 - theta). A body tumbling as a whole
-// therefore searches within the margin alone. R is the step's least-squares
-// rigid fit, or the identity (e: the motion less its mean) where that is less.
+// q = (e + theta (l + margin / 2)) / (1 - theta) for theta < 1/2. A body
+// tumbling as a whole thus searches within the margin plus theta times about
+// an edge, not theta times its size. R is the step's least-squares rigid fit
+// (used only while theta < 1/2), or the identity (e: the motion less its
+// mean) where that gives the smaller largest q.
 std::vector<double> self_motion(const PreparedSurface& s, double margin) {
   const Points& x0 = s.surface->x0;
   double longest = 0.0;

@@ -68,7 +68,8 @@ Points vertex_normals(const TriMesh& m) {
 }
 
 // The simplified surface `simple` of `mesh`, each vertex moved out along its
-// original normal until every original vertex is inside it. An original
+// original normal so that the original vertices end up inside it (within
+// kOffsetPasses passes; a thin part may keep a little outside). An original
 // vertex standing out of its nearest simplified triangle by a distance a
 // along its own normal (edge collapses may fold a few small triangles over,
 // so their winding cannot say which side is out) moves that triangle's
@@ -133,13 +134,15 @@ int collision_budget(const CollisionSurfaceDesc& desc, const TriMesh& mesh, doub
 }
 
 CollisionProxy make_collision_proxy(EmbreeDevice& device, const TriMesh& mesh, int max_triangles) {
-  CollisionProxy kept;
-  kept.surface = mesh;
-  if (max_triangles <= 0 || mesh.num_triangles() <= max_triangles) return kept;
-  const Points mesh_normals = vertex_normals(mesh);
+  const auto kept = [&] {
+    CollisionProxy out;
+    out.surface = mesh;
+    return out;
+  };
+  if (max_triangles <= 0 || mesh.num_triangles() <= max_triangles) return kept();
   const SimplifiedMesh simple = simplify_mesh(mesh, max_triangles);
-  if (simple.mesh.num_triangles() >= mesh.num_triangles() || simple.mesh.empty()) return kept;
-  return offset_outward(device, mesh, mesh_normals, simple);
+  if (simple.mesh.num_triangles() >= mesh.num_triangles() || simple.mesh.empty()) return kept();
+  return offset_outward(device, mesh, vertex_normals(mesh), simple);
 }
 
 }  // namespace recoil::sim

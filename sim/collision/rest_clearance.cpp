@@ -42,7 +42,7 @@ double rest_distance(const Points& rest, const std::array<int, 2>& e, const std:
 
 RestClearance rest_clearance(EmbreeDevice& device, const Points& rest, const Triangles& triangles,
                              const std::vector<std::array<int, 2>>& edges, double margin, double reach) {
-  RECOIL_CHECK(reach > margin, "reach " << reach << " must exceed the margin " << margin);
+  RECOIL_CHECK(reach >= margin, "reach " << reach << " must be at least the margin " << margin);
   RestClearance out;
   out.vertex.assign(static_cast<size_t>(rest.rows()), reach);
   out.edge.assign(edges.size(), reach);

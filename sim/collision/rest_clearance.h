@@ -9,8 +9,9 @@
 // shift t, with u = x - (R X + t). So a vertex (or edge) whose rest clearance
 // (its rest distance to the nearest primitive it may contact) minus its own
 // displacement and the surface's largest one exceeds the self query's radius
-// has no self candidate, and the detector skips it: a body at rest or falling
-// freely searches nothing, a body folding onto itself searches where it folds.
+// has no self candidate, and the detector skips it: a body falling freely, or
+// resting without deforming, searches nothing of itself; a body folding onto
+// itself searches where it folds.
 #include <array>
 #include <vector>
 
@@ -28,7 +29,7 @@ double rest_distance(const Points& rest, const std::array<int, 2>& e, const std:
 
 // Per vertex and per edge, the rest distance to the nearest triangle (edge)
 // that is not within `margin` at rest and shares no vertex (for edges), in
-// metres, capped at `reach`: a lower bound that is exact below it.
+// metres, capped at `reach` (>= margin): a lower bound that is exact below it.
 struct RestClearance {
   std::vector<double> vertex;  // #V
   std::vector<double> edge;    // #E, in the order of `edges`

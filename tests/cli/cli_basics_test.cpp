@@ -33,6 +33,8 @@ TEST(Cli, TyposGetADidYouMean) {
   const CommandResult option = run_recoil("run scene.json --framez 1-3");
   EXPECT_EQ(option.exit_code, 2);
   EXPECT_EQ(option.err, "recoil: error: unknown option --framez; did you mean --frames? (see recoil run --help)\n");
+  const CommandResult global = run_recoil("--max-memory 5 drp mesh.obj");
+  EXPECT_EQ(global.err, "recoil: error: unknown command \"drp\"; did you mean \"drop\"? (see --help)\n");
   const CommandResult missing = run_recoil("drop");
   EXPECT_EQ(missing.exit_code, 2);
   EXPECT_EQ(missing.err, "recoil: error: MESH is required (see recoil drop --help)\n");
@@ -43,7 +45,8 @@ TEST(Cli, RunOnAMeshOrAFolderSaysWhatToRun) {
   const std::string bunny = source_path("assets/meshes/bunny.obj").string();
   const CommandResult mesh = run_recoil("run " + shell_quote(bunny));
   EXPECT_EQ(mesh.exit_code, 2);
-  EXPECT_NE(mesh.err.find("`recoil drop " + bunny + "` or `recoil turntable " + bunny + "`"), std::string::npos)
+  EXPECT_NE(mesh.err.find("`recoil drop " + bunny + "` builds a scene of it and `recoil turntable " + bunny + "`"),
+            std::string::npos)
       << mesh.err;
   const fs::path dir = scratch_dir("run_on_folder");
   const CommandResult empty = run_recoil("run " + shell_quote(dir));
