@@ -4,9 +4,10 @@
 #include <embree3/rtcore.h>
 
 #include <algorithm>
-#include <cmath>
 #include <atomic>
+#include <cmath>
 #include <cstdint>
+#include <memory>
 #include <mutex>
 
 #include "core/check.h"

@@ -15,6 +15,7 @@
 #include "sim/fem/material.h"
 #include "sim/geometry/embedding.h"
 #include "sim/geometry/tet_mesh.h"
+#include "sim/geometry/tetrahedralize.h"
 #include "sim/geometry/transform.h"
 
 namespace recoil::sim {
@@ -31,7 +32,7 @@ struct DeformableBodyDesc {
   std::string name = "body";
   TriMesh mesh;          // surface in local coordinates; may be empty when tets are given
   TetMesh tets;          // conforming tets in local coordinates; empty: tetrahedralize `mesh`
-  int resolution = 8;    // lattice cells along the longest side when tetrahedralizing
+  int resolution = kDefaultResolution;  // lattice cells along the longest side when tetrahedralizing
   Material material;
   Transform transform;
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // m/s, initial, every node

@@ -25,6 +25,9 @@ struct TetrahedralizeStats {
 // Deterministic: the same surface and resolution give the same bytes.
 TetMesh tetrahedralize(const TriMesh& surface, int resolution, TetrahedralizeStats* stats = nullptr);
 
+// Lattice cells along the longest side when a scene does not say.
+inline constexpr int kDefaultResolution = 8;
+
 // The same; the device is no longer used (the inside test needs no rays) and
 // stays only so existing callers build unchanged.
 inline TetMesh tetrahedralize(EmbreeDevice& /*device*/, const TriMesh& surface, int resolution,

@@ -4,8 +4,8 @@
 
 #include "core/error.h"
 #include "sim/collision/collision_proxy.h"
-#include "sim/fem/deformable_body.h"
 #include "sim/geometry/skew.h"
+#include "sim/geometry/tetrahedralize.h"
 #include "sim/rigid/mass_properties.h"
 
 namespace recoil::sim {
@@ -61,7 +61,7 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
   if (desc.motion != RigidMotion::fixed) body.angular_velocity = desc.angular_velocity;
   body.pose.center = reference;
   // The cell a deformable body of this shape would have at the default resolution.
-  const double cell = bounding_box(mesh).extent().maxCoeff() / DeformableBodyDesc{}.resolution;
+  const double cell = bounding_box(mesh).extent().maxCoeff() / kDefaultResolution;
   const CollisionProxy proxy = make_collision_proxy(device, mesh, collision_budget(desc.collision, mesh, cell, margin));
   if (proxy.simplified) {
     body.render_local = mesh.vertices.rowwise() - reference.transpose();
