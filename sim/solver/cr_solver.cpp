@@ -10,9 +10,9 @@
 #include "core/check.h"
 #include "sim/solver/block_ssor.h"
 #include "sim/solver/constraint_evaluation.h"
+#include "sim/solver/cr_best_iterate.h"
 #include "sim/solver/cr_hand_back.h"
 #include "sim/solver/contact_rows_ops.h"
-#include "sim/solver/kkt_residual.h"
 
 namespace recoil::sim {
 
@@ -34,7 +34,7 @@ class CrSolver {
            ContactLinearization* linearization, ContactSolverStats& stats)
       : m_problem(problem), m_settings(settings), m_preconditioned(preconditioned),
         m_linearization(linearization), m_stats(stats), m_n(problem.A->rows()),
-        m_P(problem) {
+        m_P(problem), m_best(problem, m_n, m_P.get()) {
     if (preconditioned && settings.preconditioner == CrPreconditioner::ssor)
       m_ssor = std::make_unique<BlockSsor>(*problem.A, m_P.get().diagonal_inverses());
   }
@@ -72,10 +72,6 @@ class CrSolver {
   enum class Finish { converged, not_converged, go_on };
   Finish finish_or_continue();
   bool step();
-  double kkt_of(const Eigen::VectorXd& y, const std::vector<ContactState>& states);
-  double remember_if_best();
-  void remeasure_best();
-  void return_best_solved();
   bool out_of_budget() const { return m_stats.iterations + m_stats.restarts >= m_settings.max_iterations; }
 
   ContactProblem& m_problem;
@@ -103,12 +99,7 @@ class CrSolver {
   bool m_residual_true = false;
   bool m_stationary = false;       // scaled |B C^-1 r| < epsilon_1 (Algorithm 1 line 21)
   bool m_relinearized_ok = false;  // the last relinearize moved nothing beyond epsilon_2, and nothing changed since
-  // The solved iterate closest to a solution so far (return_best_solved()
-  // explains): y, the states it was solved for, and its KKT residual (m/s)
-  // on the rows as they are now (re-measured whenever they change).
-  Eigen::VectorXd m_best_y;
-  std::vector<ContactState> m_best_states;
-  double m_best_kkt = std::numeric_limits<double>::infinity();
+  BestSolvedIterate m_best;  // handed back when the solve ends unconverged
 };
 
 void CrSolver::start_from_warm_states() {
@@ -466,7 +457,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   // (within epsilon_2 already). Measured with the slip's secant step
   // (constraint_evaluation.h); this stop without the secant changed nothing
   // on the rollers.
-  const bool meets_laws = remember_if_best() <= eps2;
+  const bool meets_laws = m_best.offer(m_y) <= eps2;
   if (!meets_laws) {
     const EvaluationChanges changes =
         evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), eps2, m_settings.max_flips, true);
@@ -482,7 +473,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
     m_stats.new_contacts += added;
     grow_contacts();
     refresh_rows();
-    remeasure_best();
+    m_best.remeasure();
     restart_after_change(KrylovStart::new_contacts);
     return Finish::go_on;
   }
@@ -495,67 +486,10 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   // The normals and tangents may have turned even when the right-hand sides
   // barely moved: solve again on the recomputed residual before returning.
   refresh_rows();
-  remeasure_best();
+  m_best.remeasure();
   build_rhs();
   restart(KrylovStart::relinearization);
   return Finish::go_on;
-}
-
-// The KKT residual (kkt_residual.h) of iterate y (#DoF + 3 #contacts) with
-// the friction states `states` (as many as the problem has contacts, or
-// fewer: contacts added since count as inactive), on the current rows.
-// `states` may be m_problem.states itself: it is read before the swap.
-double CrSolver::kkt_of(const Eigen::VectorXd& y, const std::vector<ContactState>& states) {
-  std::vector<ContactState> filled(static_cast<size_t>(contacts()));
-  for (size_t k = 0; k < states.size(); ++k) {
-    filled[k] = states[k];
-    if (filled[k].mode != ContactMode::inactive) take_multipliers(y, m_n, static_cast<int>(k), filled[k]);
-  }
-  std::swap(filled, m_problem.states);
-  const double kkt = kkt_residual(m_problem, y.head(m_n), m_P.get()).max();
-  std::swap(filled, m_problem.states);
-  return kkt;
-}
-
-// Called where y solves the system of the current states (true residual
-// below epsilon_1, or stationary), before they are evaluated.
-// Returns the iterate's KKT residual, m/s.
-double CrSolver::remember_if_best() {
-  const double kkt = kkt_of(m_y, m_problem.states);
-  if (kkt >= m_best_kkt) return kkt;
-  m_best_kkt = kkt;
-  m_best_y = m_y;
-  m_best_states = m_problem.states;
-  return kkt;
-}
-
-// The rows changed (new contacts, re-linearisation): the best state's KKT
-// residual is measured again on them, so that later states compete with it
-// on the same rows (new contacts count against it as inactive).
-void CrSolver::remeasure_best() {
-  if (m_best_y.size() > 0) m_best_kkt = kkt_of(m_best_y, m_best_states);
-}
-
-// When the solve ends unconverged (the iteration cap, or the cap on
-// re-linearisations), y is wherever the last restart left it: mid-way
-// through a Krylov solve for an active set that the next evaluation may
-// have changed again (jelly-stack example, a cube landing on another: KKT
-// residuals of 0.1-13 m/s at the cap; a soft FEM cube at rest, capped at
-// 95 iterations: 0.012 m/s worse than a state solved before). Every solved
-// iterate met on the way answers the MCP for some active set; the one
-// closest to a solution is handed back when it beats the final iterate,
-// both measured on the rows as they are now (re-linearisation may have
-// moved them). The solve still reports itself unconverged; the tracks
-// (flip counts) stay those of the final iterate.
-void CrSolver::return_best_solved() {
-  if (m_best_y.size() == 0) return;
-  if (kkt_of(m_y, m_problem.states) <= m_best_kkt) return;
-  m_y.setZero();
-  m_y.head(m_best_y.size()) = m_best_y;
-  m_problem.states = m_best_states;
-  m_problem.states.resize(static_cast<size_t>(contacts()));  // contacts added since: inactive (default)
-  build_rhs();
-  recompute_residual();
 }
 
 void CrSolver::run(Eigen::VectorXd& dv) {
@@ -584,7 +518,10 @@ void CrSolver::run(Eigen::VectorXd& dv) {
     }
     step();
   }
-  if (!m_stats.converged) return_best_solved();
+  if (!m_stats.converged && m_best.restore_if_better(m_y)) {
+    build_rhs();
+    recompute_residual();
+  }
   // Hand back what the iterate says, converged or not: dv, the multipliers
   // and the residual all describe the same y (no step after this point).
   if (!m_residual_true) recompute_residual();
