@@ -21,8 +21,6 @@ namespace {
 constexpr int kOffsetPasses = 4;
 constexpr double kSettledShare = 1e-4;
 
-Eigen::Vector3d vertex_of(const TriMesh& m, int v) { return m.vertices.row(v).transpose(); }
-
 // p minus its nearest point on the surface (#F triangles in `scene`), m, and
 // the triangle that point lies on.
 struct Nearest {
@@ -37,9 +35,9 @@ Nearest from_nearest(const TriMesh& surface, const TriangleScene& scene, const E
     double best = std::numeric_limits<double>::infinity();
     Nearest out;
     for (int f : near) {
-      const Eigen::Vector3d q = closest_point_on_triangle(p, vertex_of(surface, surface.triangles(f, 0)),
-                                                          vertex_of(surface, surface.triangles(f, 1)),
-                                                          vertex_of(surface, surface.triangles(f, 2)))
+      const Eigen::Vector3d q = closest_point_on_triangle(p, point_at(surface.vertices, surface.triangles(f, 0)),
+                                                          point_at(surface.vertices, surface.triangles(f, 1)),
+                                                          point_at(surface.vertices, surface.triangles(f, 2)))
                                     .point;
       if ((p - q).norm() < best) {
         best = (p - q).norm();
@@ -55,8 +53,8 @@ Nearest from_nearest(const TriMesh& surface, const TriangleScene& scene, const E
 Points vertex_normals(const TriMesh& m) {
   Points n = Points::Zero(m.num_vertices(), 3);
   for (int f = 0; f < m.num_triangles(); ++f) {
-    const Eigen::Vector3d a = vertex_of(m, m.triangles(f, 0)), b = vertex_of(m, m.triangles(f, 1)),
-                          c = vertex_of(m, m.triangles(f, 2));
+    const Eigen::Vector3d a = point_at(m.vertices, m.triangles(f, 0)), b = point_at(m.vertices, m.triangles(f, 1)),
+                          c = point_at(m.vertices, m.triangles(f, 2));
     const Eigen::Vector3d area_normal = (b - a).cross(c - a);  // twice the area, outward
     for (int k = 0; k < 3; ++k) n.row(m.triangles(f, k)) += area_normal.transpose();
   }
@@ -97,12 +95,12 @@ CollisionProxy offset_outward(EmbreeDevice& device, const TriMesh& mesh, const P
     const WindingNumberTree winding(out.surface);
     Eigen::VectorXd step = Eigen::VectorXd::Zero(n);
     for (int v = 0; v < mesh.num_vertices(); ++v) {
-      const Nearest q = from_nearest(out.surface, scene, vertex_of(mesh, v), radius, near);
+      const Nearest q = from_nearest(out.surface, scene, point_at(mesh.vertices, v), radius, near);
       if (q.triangle < 0) continue;
       const double along = mesh_normals.row(v).dot(q.offset);
       double least = along;
       for (int k = 0; k < 3; ++k) least = std::min(least, step[out.surface.triangles(q.triangle, k)]);
-      if (!(along > least) || std::abs(winding(vertex_of(mesh, v))) >= 0.5) continue;
+      if (!(along > least) || std::abs(winding(point_at(mesh.vertices, v))) >= 0.5) continue;
       for (int k = 0; k < 3; ++k) {
         double& s = step[out.surface.triangles(q.triangle, k)];
         s = std::max(s, along);

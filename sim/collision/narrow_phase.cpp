@@ -12,7 +12,6 @@
 namespace recoil::sim {
 namespace {
 
-Eigen::Vector3d row(const Points& x, int i) { return x.row(i).transpose(); }
 
 // Distances below this count as touching (metres); relative to the scene's
 // coordinates because that is where double rounding lives.
@@ -97,9 +96,9 @@ bool edge_face_normals(const PreparedSurface& s, int edge, Eigen::Vector3d& n_fo
   const std::array<int, 2> ends = s.edges[static_cast<size_t>(edge)];
   const std::array<int, 2> opposite = s.edge_opposite[static_cast<size_t>(edge)];
   const Points& x = s.surface->x0;
-  const Eigen::Vector3d lo = row(x, ends[0]), hi = row(x, ends[1]);
-  n_forward = face_normal(lo, hi, row(x, opposite[0]));
-  n_back = face_normal(hi, lo, row(x, opposite[1]));
+  const Eigen::Vector3d lo = point_at(x, ends[0]), hi = point_at(x, ends[1]);
+  n_forward = face_normal(lo, hi, point_at(x, opposite[0]));
+  n_back = face_normal(hi, lo, point_at(x, opposite[1]));
   if (n_forward.isZero() || n_back.isZero()) return false;
   n_forward.normalize();
   n_back.normalize();
@@ -114,8 +113,8 @@ double edge_bend(const PreparedSurface& s, int edge) {
   Eigen::Vector3d n_forward, n_back;
   if (opposite[0] < 0 || !edge_face_normals(s, edge, n_forward, n_back)) return std::numeric_limits<double>::infinity();
   const Points& x = s.surface->x0;
-  const Eigen::Vector3d lo = row(x, s.edges[static_cast<size_t>(edge)][0]);
-  return std::max(std::abs(n_forward.dot(row(x, opposite[1]) - lo)), std::abs(n_back.dot(row(x, opposite[0]) - lo)));
+  const Eigen::Vector3d lo = point_at(x, s.edges[static_cast<size_t>(edge)][0]);
+  return std::max(std::abs(n_forward.dot(point_at(x, opposite[1]) - lo)), std::abs(n_back.dot(point_at(x, opposite[0]) - lo)));
 }
 
 // Whether direction d (unit) leaves the surface across `edge` into its
@@ -179,8 +178,8 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
                "surface " << index << ": self-contact needs the rest shape (#V rows)");
   out.vertex_motion.resize(static_cast<size_t>(nv));
   for (int v = 0; v < nv; ++v) {
-    out.box0.extend(row(surface.x0, v));
-    out.vertex_motion[v] = (row(surface.x1, v) - row(surface.x0, v)).norm();
+    out.box0.extend(point_at(surface.x0, v));
+    out.vertex_motion[v] = (point_at(surface.x1, v) - point_at(surface.x0, v)).norm();
     out.max_motion = std::max(out.max_motion, out.vertex_motion[v]);
   }
   if (nv > 0)
@@ -239,11 +238,11 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const CollisionSurface& sb = *b.surface;
   const std::array<int, 3> tv = {sb.triangles(triangle, 0), sb.triangles(triangle, 1), sb.triangles(triangle, 2)};
 
-  const Eigen::Vector3d p0 = row(sa.x0, vertex), p1 = row(sa.x1, vertex);
+  const Eigen::Vector3d p0 = point_at(sa.x0, vertex), p1 = point_at(sa.x1, vertex);
   std::array<Eigen::Vector3d, 3> t0, t1;
   for (int k = 0; k < 3; ++k) {
-    t0[k] = row(sb.x0, tv[k]);
-    t1[k] = row(sb.x1, tv[k]);
+    t0[k] = point_at(sb.x0, tv[k]);
+    t1[k] = point_at(sb.x1, tv[k]);
   }
   const TriangleClosestPoint closest = closest_point_on_triangle(p0, t0[0], t0[1], t0[2]);
   const double distance = (p0 - closest.point).norm();
@@ -317,8 +316,8 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   if (a.index == b.index) RECOIL_CHECK(edge_a < edge_b, "self edge pair " << edge_a << ", " << edge_b << " not ordered");
   const CollisionSurface& sa = *a.surface;
   const CollisionSurface& sb = *b.surface;
-  const Eigen::Vector3d a0 = row(sa.x0, ea[0]), a1 = row(sa.x0, ea[1]);
-  const Eigen::Vector3d b0 = row(sb.x0, eb[0]), b1 = row(sb.x0, eb[1]);
+  const Eigen::Vector3d a0 = point_at(sa.x0, ea[0]), a1 = point_at(sa.x0, ea[1]);
+  const Eigen::Vector3d b0 = point_at(sb.x0, eb[0]), b1 = point_at(sb.x0, eb[1]);
   SegmentClosestPoints closest = closest_points_on_segments(a0, a1, b0, b1);
   const double distance = ((a0 + closest.s * (a1 - a0)) - (b0 + closest.t * (b1 - b0))).norm();
   const double motion = a.edge_motion[edge_a] + b.edge_motion[edge_b];
@@ -329,8 +328,8 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   if (edge_bend(a, edge_a) <= flat || edge_bend(b, edge_b) <= flat) return std::nullopt;
 
   const double tol = pair_tolerance(a, b);
-  const Eigen::Vector3d a0e = row(sa.x1, ea[0]), a1e = row(sa.x1, ea[1]);
-  const Eigen::Vector3d b0e = row(sb.x1, eb[0]), b1e = row(sb.x1, eb[1]);
+  const Eigen::Vector3d a0e = point_at(sa.x1, ea[0]), a1e = point_at(sa.x1, ea[1]);
+  const Eigen::Vector3d b0e = point_at(sb.x1, eb[0]), b1e = point_at(sb.x1, eb[1]);
   double relative = 0.0;  // narrow_phase.h: how far any point of one edge moves with respect to any of the other
   for (const Eigen::Vector3d& da_i : {Eigen::Vector3d(a0e - a0), Eigen::Vector3d(a1e - a1)})
     for (const Eigen::Vector3d& db_j : {Eigen::Vector3d(b0e - b0), Eigen::Vector3d(b1e - b1)})
@@ -403,7 +402,7 @@ std::optional<ContactCandidate> test_vertex_plane(const PreparedSurface& a, int 
   const double length = plane.normal.norm();
   RECOIL_CHECK(length > 0.0 && std::isfinite(length), "plane " << plane_index << " has no normal");
   const Eigen::Vector3d n = plane.normal / length;
-  const Eigen::Vector3d p0 = row(a.surface->x0, vertex), p1 = row(a.surface->x1, vertex);
+  const Eigen::Vector3d p0 = point_at(a.surface->x0, vertex), p1 = point_at(a.surface->x1, vertex);
   const double d0 = n.dot(p0 - plane.point), d1 = n.dot(p1 - plane.point);
   if (!(std::min(d0, d1) <= margin)) return std::nullopt;
   ContactCandidate c;

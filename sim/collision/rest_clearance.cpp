@@ -10,7 +10,6 @@
 namespace recoil::sim {
 
 namespace {
-Eigen::Vector3d rest_row(const Points& x, int v) { return x.row(v).transpose(); }
 
 // Each edge's rest box padded by half the reach: boxes of edges within the
 // reach of each other overlap.
@@ -18,7 +17,7 @@ std::vector<Aabb> padded_edge_boxes(const Points& rest, const std::vector<std::a
   std::vector<Aabb> boxes(edges.size());
   const Eigen::Vector3d pad = Eigen::Vector3d::Constant(0.5 * reach);
   for (size_t e = 0; e < edges.size(); ++e) {
-    const Eigen::Vector3d p = rest_row(rest, edges[e][0]), q = rest_row(rest, edges[e][1]);
+    const Eigen::Vector3d p = point_at(rest, edges[e][0]), q = point_at(rest, edges[e][1]);
     boxes[e].min = p.cwiseMin(q) - pad;
     boxes[e].max = p.cwiseMax(q) + pad;
   }
@@ -27,15 +26,15 @@ std::vector<Aabb> padded_edge_boxes(const Points& rest, const std::vector<std::a
 }  // namespace
 
 double rest_distance(const Points& rest, int vertex, const std::array<int, 3>& triangle) {
-  const Eigen::Vector3d p = rest_row(rest, vertex);
-  const TriangleClosestPoint q = closest_point_on_triangle(p, rest_row(rest, triangle[0]), rest_row(rest, triangle[1]),
-                                                           rest_row(rest, triangle[2]));
+  const Eigen::Vector3d p = point_at(rest, vertex);
+  const TriangleClosestPoint q = closest_point_on_triangle(p, point_at(rest, triangle[0]), point_at(rest, triangle[1]),
+                                                           point_at(rest, triangle[2]));
   return (p - q.point).norm();
 }
 
 double rest_distance(const Points& rest, const std::array<int, 2>& e, const std::array<int, 2>& f) {
-  const Eigen::Vector3d a0 = rest_row(rest, e[0]), a1 = rest_row(rest, e[1]);
-  const Eigen::Vector3d b0 = rest_row(rest, f[0]), b1 = rest_row(rest, f[1]);
+  const Eigen::Vector3d a0 = point_at(rest, e[0]), a1 = point_at(rest, e[1]);
+  const Eigen::Vector3d b0 = point_at(rest, f[0]), b1 = point_at(rest, f[1]);
   const SegmentClosestPoints c = closest_points_on_segments(a0, a1, b0, b1);
   return ((a0 + c.s * (a1 - a0)) - (b0 + c.t * (b1 - b0))).norm();
 }
@@ -52,7 +51,7 @@ RestClearance rest_clearance(EmbreeDevice& device, const Points& rest, const Tri
   std::vector<int> near;
   for (int v = 0; v < rest.rows(); ++v) {
     near.clear();
-    scene.triangles_near(rest_row(rest, v), reach, near);
+    scene.triangles_near(point_at(rest, v), reach, near);
     for (int t : near) {
       const double d = rest_distance(rest, v, {triangles(t, 0), triangles(t, 1), triangles(t, 2)});
       if (d > margin) out.vertex[static_cast<size_t>(v)] = std::min(out.vertex[static_cast<size_t>(v)], d);

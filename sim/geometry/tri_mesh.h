@@ -31,6 +31,9 @@ struct Aabb {
 
 Aabb bounding_box(const TriMesh& mesh);
 
+// Row i of a #V by 3 point list as a column vector.
+inline Eigen::Vector3d point_at(const Points& points, int i) { return points.row(i).transpose(); }
+
 // Applies p -> R * (s .* p) + t to every vertex; flips winding when the scale
 // has a negative determinant so triangles stay outward-facing.
 void transform_in_place(TriMesh& mesh, const Eigen::Matrix3d& rotation,
