@@ -15,10 +15,14 @@
 
 namespace recoil::fuzz {
 
-// A folder of this process, removed at exit (one per process, so parallel fuzzers never share inputs).
+// A folder of this process, removed at exit (one per process, so parallel
+// fuzzers never share inputs); the pid is padded so that the path, which the
+// readers parse, has the same length in every run.
 inline const std::filesystem::path& scratch_folder() {
   static const std::filesystem::path folder = [] {
-    const auto dir = std::filesystem::temp_directory_path() / ("recoil-fuzz-" + std::to_string(::getpid()));
+    char name[32];
+    std::snprintf(name, sizeof name, "recoil-fuzz-%010d", static_cast<int>(::getpid()));
+    const auto dir = std::filesystem::temp_directory_path() / name;
     std::filesystem::create_directories(dir);
     std::atexit([] { std::error_code ignored; std::filesystem::remove_all(scratch_folder(), ignored); });
     return dir;

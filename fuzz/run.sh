@@ -15,7 +15,10 @@ shift 2
 here=$(cd "$(dirname "$0")" && pwd)
 case $limit in
   seconds=*) stop=(-max_total_time="${limit#seconds=}") replay=0 ;;
-  runs=*) stop=(-runs="${limit#runs=}") replay=1 ;;
+  # Two things make libFuzzer's choices differ from run to run, so a replay
+  # goes without both: comparison tracing feeds operand values, pointers
+  # among them, back into the mutations, and the corpus is reloaded on a clock.
+  runs=*) stop=(-runs="${limit#runs=}" -use_cmp=0 -reload=0) replay=1 ;;
   *) echo "fuzz/run.sh: the second argument is seconds=N or runs=N, not '$limit'" >&2; exit 2 ;;
 esac
 # A slow input is a finding after 10 s; 1 GiB in one allocation is a runaway (the inputs are a few KiB).
@@ -26,13 +29,16 @@ for target in "$@"; do
   name=${target#fuzz_}
   corpus=$build/fuzz-corpus/$name findings=$build/fuzz-findings/$name log=$build/fuzz-logs/$name.log
   [[ $replay == 1 ]] && corpus=$(mktemp -d)  # what a replay adds is thrown away
+  # The inputs are written under TMPDIR, and the readers parse that path.
+  scratch=${TMPDIR:-/tmp}
+  [[ $replay == 1 ]] && scratch=/tmp
   mkdir -p "$corpus" "$findings" "$(dirname "$log")"
   asan=${ASAN_OPTIONS:-}
   # assimp leaks a few KiB on some broken files (in its STL reader); not recoil's to fix.
   [[ $name == mesh_import ]] && asan=detect_leaks=0${asan:+:$asan}
   marker=$(mktemp)  # findings of earlier runs stay in $findings but are not counted again
   start=$(date +%s)
-  ASAN_OPTIONS=$asan "$build/fuzz/$target" "${flags[@]}" -dict="$here/$name.dict" -artifact_prefix="$findings/" \
+  TMPDIR=$scratch ASAN_OPTIONS=$asan "$build/fuzz/$target" "${flags[@]}" -dict="$here/$name.dict" -artifact_prefix="$findings/" \
     "$corpus" "$here/corpus/$name" >"$log" 2>&1
   rc=$?
   elapsed=$(( $(date +%s) - start ))

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <fstream>
 #include <sstream>
 #include <string_view>
 #include <vector>
@@ -44,38 +45,100 @@ std::uint64_t ply_type_bytes(const std::string& type) {
                   " bytes can hold");
 }
 
+// `line` for a message: at most 60 bytes, anything unprintable as '?'.
+std::string quoted_line(const std::string& line) {
+  std::string out;
+  for (const char c : line.substr(0, 60)) out += (c >= ' ' && c <= '~' && c != '"') ? c : '?';
+  return out;
+}
+
 struct PlyElement {
   std::string name;
   std::uint64_t count = 0;
   std::uint64_t min_bytes = 0;  // of one element: 2 per ASCII value ("0 "), the type's size in binary
+  std::vector<bool> is_list;    // per property, in order
 };
 
-void check_ply(const std::string& head, std::uintmax_t file_size, const std::string& name) {
-  std::istringstream lines(head);
-  std::string line;
-  std::getline(lines, line);  // "ply"
+// Throws when `line`, one instance of `e`, holds a list count that needs more
+// bytes than the file has: a list of n values needs at least 2n ("0 ").
+void check_instance_line(const std::string& line, const PlyElement& e, std::uintmax_t file_size,
+                         const std::string& name) {
+  std::istringstream values(line);
+  std::string value;
+  for (const bool list : e.is_list) {
+    if (!(values >> value)) return;
+    if (!list) continue;
+    // A negative count of a signed type would become a huge unsigned one.
+    std::uint64_t n = 0;
+    const bool negative = value.size() > 1 && value[0] == '-';
+    if (!parse_count(negative ? value.substr(1) : value, n)) n = 0;
+    if (negative && n > 0) n = UINT64_MAX;
+    if (static_cast<long double>(n) * 2.0L > static_cast<long double>(file_size))
+      refuse_counts(name, "a list of " + (negative ? value : std::to_string(n)) + " values in " + e.name, file_size);
+    for (std::uint64_t k = 0; k < n; ++k)
+      if (!(values >> value)) return;
+  }
+}
+
+// assimp reserves a list's values as soon as it reads the count, whatever the
+// count's type (a "uchar" count of 99990000 is taken as is), so the lists of
+// an ASCII body are checked before it reads them. assimp reads one instance
+// per '\n'-ended line, and once the lines run out it reads the last one again.
+void check_ascii_list_counts(std::istream& body, const std::vector<PlyElement>& elements, std::uintmax_t file_size,
+                             const std::string& name) {
+  std::string line, next;
+  bool lines_left = true;
+  for (const PlyElement& e : elements) {
+    const bool has_list = std::find(e.is_list.begin(), e.is_list.end(), true) != e.is_list.end();
+    for (std::uint64_t i = 0; i < e.count; ++i) {
+      lines_left = lines_left && static_cast<bool>(std::getline(body, next));
+      if (lines_left) line.swap(next);
+      if (has_list) check_instance_line(line, e, file_size, name);
+      if (!lines_left) break;  // every further instance reads the same line
+    }
+  }
+}
+
+// `head` starts at the magic, `head_offset` bytes into the file at `path`.
+void check_ply(const std::string& head, size_t head_offset, const std::filesystem::path& path, std::uintmax_t file_size,
+               const std::string& name) {
+  // assimp ends a header line at '\n', '\r', form feed or NUL.
+  constexpr std::string_view kLineEnd("\n\r\f\0", 4);
+  size_t next = std::min(head.find_first_of(kLineEnd), head.size());  // past "ply"
   bool ascii = true;
   std::vector<PlyElement> elements;
   bool ended = false;
-  while (!ended && std::getline(lines, line)) {
+  while (!ended && next < head.size()) {
+    const size_t start = next + 1;
+    next = std::min(head.find_first_of(kLineEnd, start), head.size());
+    const std::string line = head.substr(start, next - start);
     std::istringstream words(line);
     std::string keyword, a, b;
     words >> keyword >> a >> b;  // b: a list's count type
-    // Only "end_header" at the start of a line, then the line's end, a space, tab, CR, form
-    // feed or NUL (assimp 5.2's blanks): it hangs on near misses ("end_hEader", "end_header\v").
+    // Only "end_header" at the start of a line, then a line end (not the file's end), a space
+    // or a tab: assimp 5.2 hangs on near misses ("end_hEader", "end_header\v", "end_header"
+    // as the file's last bytes).
     ended = line.rfind("end_header", 0) == 0 &&
-            (line.size() == 10 || std::string_view(" \t\r\f", 5).find(line[10]) != std::string_view::npos);
+            (line.size() == 10 ? next < head.size() : line[10] == ' ' || line[10] == '\t');
     if (keyword == "format") {
+      // assimp 5.2 may search forever past a format line it cannot read, so only the three forms pass.
+      std::string extra;
+      words >> extra;
+      const bool known = a == "ascii" || a == "binary_little_endian" || a == "binary_big_endian";
+      if (!known || b.empty() || b.find_first_not_of("0123456789.") != std::string::npos || !extra.empty())
+        throw bad_input(name + ": PLY format line \"" + quoted_line(line) +
+                        "\" is not \"format ascii|binary_little_endian|binary_big_endian VERSION\"");
       ascii = a == "ascii";
     } else if (keyword == "element") {
       // The largest number on the line: assimp finds the count even where the name is missing.
-      PlyElement e{a, 0, 0};
+      PlyElement e{a, 0, 0, {}};
       std::istringstream rest(line);
       for (std::string word; rest >> word;)
         if (std::uint64_t n = 0; parse_count(word, n)) e.count = std::max(e.count, n);
       elements.push_back(e);
     } else if (keyword == "property" && !elements.empty()) {
       elements.back().min_bytes += ascii ? 2 : ply_type_bytes(a == "list" ? b : a);  // a list may be empty
+      elements.back().is_list.push_back(a == "list");
     }
   }
   // Without one, assimp 5.2 searches for it forever.
@@ -87,6 +150,12 @@ void check_ply(const std::string& head, std::uintmax_t file_size, const std::str
     if (needed > static_cast<long double>(file_size))
       refuse_counts(name, std::to_string(e.count) + " " + e.name + " elements", file_size);
   }
+  if (!ascii) return;
+  // The body's lines end at '\n' only; it starts on the line after end_header's.
+  const size_t body_start = std::min(head.find('\n', next), head.size() - 1) + 1;
+  std::ifstream body(path, std::ios::binary);
+  body.seekg(static_cast<std::streamoff>(head_offset + body_start));
+  check_ascii_list_counts(body, elements, file_size, name);
 }
 
 // Mirrors assimp's reading of an OFF header character by character: optional
@@ -139,16 +208,31 @@ void check_off(const std::string& head, bool named_off, std::uintmax_t file_size
 
 }  // namespace
 
-void check_declared_mesh_counts(const std::string& head, std::uintmax_t file_size, const std::filesystem::path& path) {
+void check_declared_mesh_counts(const std::filesystem::path& path) {
   const std::string name = path.string();
-  // assimp finds the PLY magic after leading blank lines too.
-  const size_t text = std::min(head.find_first_not_of(" \t\r\n"), head.size());
-  if (lower_case(head.substr(text, 3)) == "ply") {
-    check_ply(head.substr(text), file_size, name);
+  std::error_code ec;
+  const std::uintmax_t file_size = std::filesystem::file_size(path, ec);
+  if (ec) return;  // assimp reports what it cannot open
+  // Headers fit in the first 64 KiB.
+  std::string head(64 * 1024, '\0');
+  std::ifstream in(path, std::ios::binary);
+  in.read(head.data(), static_cast<std::streamsize>(head.size()));
+  head.resize(static_cast<size_t>(in.gcount()));
+  const std::string extension = lower_case(path.extension().string());
+  // assimp finds the PLY magic after leading blanks and line ends (its line ends include form feed and NUL).
+  const size_t text = std::min(head.find_first_not_of(std::string_view(" \t\r\n\f\0", 6)), head.size());
+  const bool starts_with_magic = lower_case(head.substr(text, 3)) == "ply" &&
+                                 (text + 3 == head.size() || std::isspace(static_cast<unsigned char>(head[text + 3])));
+  // In a file named .ply, assimp 5.2 also takes the magic from later lines
+  // and then may search for end_header forever; a PLY file starts with it.
+  if (!starts_with_magic && extension == ".ply" && text < head.size())
+    throw bad_input(name + ": not a PLY file: it does not start with the line \"ply\"");
+  if (starts_with_magic) {
+    check_ply(head.substr(text), text, path, file_size, name);
     return;
   }
   // assimp picks its OFF reader by the file's extension, or by the magic for other names.
-  check_off(head, lower_case(path.extension().string()) == ".off", file_size, name);
+  check_off(head, extension == ".off", file_size, name);
 }
 
 }  // namespace recoil::sim

@@ -78,6 +78,18 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   std::ofstream(dir / "huge.ply") << ply_start << "end_header\n0\n";
   std::ofstream(dir / "unended.ply") << ply_start << "0\n";
   std::ofstream(dir / "vtab.ply") << ply_start << "end_header\v0\n";
+  std::ofstream(dir / "last.ply") << ply_start << "end_header";
+  std::ofstream(dir / "format.ply") << std::string("ply\nformat ascii\0\0end_header\n", 30);
+  // assimp skips form feeds before the magic as line ends, and then searches for end_header forever.
+  std::ofstream(dir / "feed.ply") << "\f\f\n" << ply_start << "0\n";
+  // ... and after a leading carriage return it reads the magic from the second line: a .ply file must start with it.
+  std::ofstream(dir / "second.ply") << "\rOOOO\n" << ply_start << "0\n";
+  // A face list's count is reserved as read, whatever its declared type; once
+  // the lines run out, assimp reads the last one again for every instance left.
+  const std::string ply_faces = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\n"
+                                "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
+  std::ofstream(dir / "list.ply") << ply_faces << "0 0 0\n1 0 0\n0 1 0\n99990000 0 1 2\n";
+  std::ofstream(dir / "short.ply") << ply_faces << "0 0 0\n1 0 0\n99990000 1 0\n";
   std::ofstream(dir / "huge.off") << "OFF\n1000000000 1 0\n0 0 0\n";
   // assimp reads a .off file without its magic too, and takes a leading '4' for the homogeneous flag.
   std::ofstream(dir / "bare.off") << "4 900000000 1 0\n0 0 0\n";
@@ -86,6 +98,14 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   expect_names(e1, "4000000000 vertex");
   expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "unended.ply"); }), "end_header");
   expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "vtab.ply"); }), "end_header");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "last.ply"); }), "end_header");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "format.ply"); }), "format line");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "feed.ply"); }), "end_header");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "second.ply"); }), "not a PLY file");
+  const std::string e_list = test::bad_input_within_a_second([&] { import_surface(dir / "list.ply"); });
+  expect_names(e_list, (dir / "list.ply").string());
+  expect_names(e_list, "a list of 99990000 values in face");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "short.ply"); }), "99990000 values");
   const std::string e3 = test::bad_input_within_a_second([&] { import_surface(dir / "huge.off"); });
   expect_names(e3, (dir / "huge.off").string());
   expect_names(e3, "1000000000 vertices");
