@@ -10,7 +10,7 @@ CMAKE_FLAGS ?=
 # this only when it creates a build folder, so existing ones keep theirs.
 export CMAKE_GENERATOR ?= Ninja
 
-.PHONY: all deps build demo test test-sanitize fuzz-build fuzz fuzz-smoke bench validation-doc clean
+.PHONY: all deps build demo test test-farm test-sanitize fuzz-build fuzz fuzz-smoke bench validation-doc clean
 
 all: build
 
@@ -35,6 +35,14 @@ TEST_TARGETS = recoil recoil_tests_sim recoil_tests_render recoil_tests_cli reco
 test: deps $(BUILD)/CMakeCache.txt
 	cmake --build $(BUILD) -j $(JOBS) --target $(TEST_TARGETS)
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+# The render farm test (farm/README.md): a real single-node Slurm, started
+# from the distribution's packages, runs a sharded `recoil batch` as a 3-task
+# array and every item must come out exactly once. Needs root.
+test-farm: deps $(BUILD)/CMakeCache.txt
+	cmake --build $(BUILD) -j $(JOBS) --target recoil
+	@bash scripts/install-deps.sh --farm
+	bash farm/slurm/test-farm.sh $(BUILD)/recoil
 
 # The suite under AddressSanitizer + UndefinedBehaviorSanitizer (run by CI).
 # Left out: the long physics scenes, 2-10 min each under the sanitizers,

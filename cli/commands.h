@@ -21,5 +21,6 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
 void add_compare_command(CLI::App& app, const GlobalOptions& global, Action& action);
 void add_run_command(CLI::App& app, const GlobalOptions& global, Action& action);
 void add_drop_command(CLI::App& app, const GlobalOptions& global, Action& action);
+void add_batch_command(CLI::App& app, const GlobalOptions& global, Action& action);
 
 }  // namespace recoil::cli

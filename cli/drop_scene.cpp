@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <random>
 
+#include "cli/json_cursor.h"
 #include "core/error.h"
 #include "sim/fem/deformable_body.h"
 #include "sim/geometry/mesh_import.h"
@@ -50,8 +51,6 @@ nlohmann::json material_json(const std::string& preset) {
   if (preset == "stiff") return {{"youngs_modulus", 1e7}, {"poisson_ratio", 0.35}, {"density", 1200}, {"damping", 0.01}};
   return {{"youngs_modulus", 1e5}, {"poisson_ratio", 0.4}, {"density", 1000}, {"damping", 0.03}};  // soft
 }
-
-nlohmann::json vec(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
 // Uniform in [lo, hi) from the raw 64-bit stream (the standard distributions
 // differ between library versions; the bits do not).
@@ -102,7 +101,7 @@ nlohmann::json build_drop_scene(const DropSettings& settings) {
                            {"mesh", s.path},
                            {"up", to_string(settings.up)},
                            {"friction", settings.friction},
-                           {"transform", {{"position", vec(position)}, {"rotation", vec(rotation)}, {"scale", s.scale}}}};
+                           {"transform", {{"position", json_vec3(position)}, {"rotation", json_vec3(rotation)}, {"scale", s.scale}}}};
     if (settings.collision_triangles == 0) body["collision"] = "mesh";
     else if (settings.collision_triangles > 0) body["collision"] = {{"triangles", settings.collision_triangles}};
     else if (settings.collision_edge > 0.0) body["collision"] = {{"edge_length", settings.collision_edge}};

@@ -2,16 +2,16 @@
 
 #include <algorithm>
 
+#include "cli/json_cursor.h"
+
 namespace recoil::cli {
 namespace {
-
-nlohmann::json vec(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
 nlohmann::json body_json(const sim::BodyStats& s) {
   const Eigen::Vector3d velocity = s.mass > 0 ? Eigen::Vector3d(s.momentum / s.mass) : Eigen::Vector3d::Zero();
   return {{"name", s.name},
-          {"com", vec(s.center_of_mass)},
-          {"velocity", vec(velocity)},
+          {"com", json_vec3(s.center_of_mass)},
+          {"velocity", json_vec3(velocity)},
           {"kinetic_energy", s.kinetic_energy},
           {"elastic_energy", s.elastic_energy},
           {"min_volume_ratio", s.min_volume_ratio}};

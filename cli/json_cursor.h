@@ -22,6 +22,9 @@ namespace recoil::cli {
 // "FILE: /POINTER: ..." naming the field it was given for.
 nlohmann::json parse_json_text(const std::string& text, const std::string& file);
 
+// [x, y, z] for scene files and stats.
+inline nlohmann::json json_vec3(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
+
 // The closest of `candidates` to `word` when it is a plausible typo, else "".
 std::string near_miss(std::string_view word, const std::vector<std::string>& candidates);
 

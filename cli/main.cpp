@@ -27,6 +27,7 @@ int main(int argc, char** argv) {
   cli::add_turntable_command(app, global, action);
   cli::add_info_command(app, global, action);
   cli::add_compare_command(app, global, action);
+  cli::add_batch_command(app, global, action);
 
   try {
     app.parse(argc, argv);

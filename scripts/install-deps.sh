@@ -3,6 +3,7 @@
 # Installs only what is missing, through apt-get as root or via sudo.
 #   scripts/install-deps.sh          build + test dependencies
 #   scripts/install-deps.sh --video  also ffmpeg, for `recoil run --video`
+#   scripts/install-deps.sh --farm   also Slurm and munge, for the farm test (make test-farm)
 set -euo pipefail
 
 packages=(
@@ -14,6 +15,8 @@ packages=(
   libassimp-dev          # assimp 5: mesh import
   libmeshoptimizer-dev   # meshoptimizer: collision surfaces simplified from fine meshes
   libpng-dev             # PNG read/write
+  libfreetype-dev        # the labels of batch contact sheets ...
+  fonts-dejavu-core      # ... drawn in DejaVu Sans
   libcli11-dev           # command line
   nlohmann-json3-dev     # scene files, stats
   libgtest-dev           # tests
@@ -25,7 +28,10 @@ packages=(
   clang                  # make fuzz: the fuzz targets are built with clang ...
   libclang-rt-14-dev     # ... and linked with its libFuzzer and sanitizer runtimes
 )
-if [[ "${1:-}" == "--video" ]]; then packages+=(ffmpeg); fi
+case "${1:-}" in
+  --video) packages+=(ffmpeg) ;;
+  --farm) packages+=(slurm-wlm munge) ;;
+esac
 
 missing=()
 for p in "${packages[@]}"; do

@@ -8,9 +8,7 @@
 #include <assimp/Importer.hpp>
 #include <cmath>
 #include <array>
-#include <fstream>
 #include <map>
-#include <system_error>
 #include <vector>
 
 #include "core/error.h"
@@ -102,18 +100,14 @@ TriMesh weld_and_clean(const TriMesh& mesh) {
   return out;
 }
 
+bool is_mesh_file_name(const fs::path& path) {
+  const std::string extension = path.extension().string();
+  return extension.size() > 1 && Assimp::Importer().IsExtensionSupported(extension);
+}
+
 TriMesh import_surface(const fs::path& path) {
   require_regular_file(path, "mesh file");
-  {
-    // Headers fit in the first 64 KiB; their counts are checked before assimp allocates for them.
-    std::string head(64 * 1024, '\0');
-    std::ifstream in(path, std::ios::binary);
-    in.read(head.data(), static_cast<std::streamsize>(head.size()));
-    head.resize(static_cast<size_t>(in.gcount()));
-    std::error_code ec;
-    const std::uintmax_t size = fs::file_size(path, ec);
-    if (!ec) check_declared_mesh_counts(head, size, path);
-  }
+  check_declared_mesh_counts(path);
   Assimp::Importer importer;
   // Only assimp's validation runs: its other post-processing steps assert
   // (and abort) on some malformed files, so triangulation, dropping points and

@@ -15,6 +15,9 @@ namespace recoil::sim {
 // holds no triangles.
 TriMesh import_surface(const std::filesystem::path& path);
 
+// Whether assimp has a reader for files named like `path` (by extension).
+bool is_mesh_file_name(const std::filesystem::path& path);
+
 // Welds vertices with bit-identical positions and drops triangles that then
 // repeat a vertex or have zero area; unused vertices are removed. Keeps the
 // first occurrence order, so the result is deterministic.

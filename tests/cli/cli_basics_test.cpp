@@ -22,7 +22,7 @@ TEST(Cli, UnknownCommandIsBadUsage) {
   const CommandResult r = run_recoil("frobnicate");
   EXPECT_EQ(r.exit_code, 2);
   EXPECT_EQ(r.err, "recoil: error: unknown command \"frobnicate\"; the commands are run, drop, turntable, info, "
-                   "compare (see --help)\n");
+                   "compare, batch (see --help)\n");
 }
 
 // One line each, with the closest command or option named.

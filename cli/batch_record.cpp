@@ -1,0 +1,68 @@
+#include "cli/batch_record.h"
+
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli/file_io.h"
+
+namespace recoil::cli {
+namespace fs = std::filesystem;
+
+std::optional<ItemRecord> read_item_record(const fs::path& item_dir) {
+  std::ifstream in(item_dir / "item.json");
+  if (!in) return std::nullopt;
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (!j.is_object()) return std::nullopt;
+  ItemRecord r;
+  r.index = j.value("index", -1);
+  r.name = j.value("name", "");
+  r.status = j.value("status", "");
+  r.exit_code = j.value("exit_code", 0);
+  r.seconds = j.value("seconds", 0.0);
+  r.message = j.value("message", "");
+  r.shard = j.value("shard", "");
+  if (r.status != "succeeded" && r.status != "failed") return std::nullopt;
+  return r;
+}
+
+namespace {
+
+nlohmann::json to_json(const ItemRecord& r) {
+  return {{"index", r.index}, {"name", r.name},       {"status", r.status}, {"exit_code", r.exit_code},
+          {"seconds", r.seconds}, {"message", r.message}, {"shard", r.shard}};
+}
+
+}  // namespace
+
+void write_item_record(const fs::path& item_dir, const ItemRecord& record) {
+  write_text_atomically(item_dir / "item.json", to_json(record).dump(2) + "\n");
+}
+
+std::vector<ItemRecord> write_batch_summary(const fs::path& output, const fs::path& source,
+                                            const std::vector<BatchItem>& items) {
+  std::vector<ItemRecord> records;
+  nlohmann::json list = nlohmann::json::array();
+  int succeeded = 0, failed = 0;
+  for (const BatchItem& item : items) {
+    ItemRecord r = read_item_record(output / item.name).value_or(ItemRecord{});
+    if (r.status.empty()) r.status = "pending";
+    r.index = item.index;
+    r.name = item.name;
+    succeeded += r.status == "succeeded";
+    failed += r.status == "failed";
+    nlohmann::json entry = to_json(r);
+    entry["output"] = (output / item.name).string();
+    entry["command"] = item.args;
+    list.push_back(entry);
+    records.push_back(r);
+  }
+  const nlohmann::json summary = {{"source", source.string()},
+                                  {"items", list},
+                                  {"succeeded", succeeded},
+                                  {"failed", failed},
+                                  {"pending", static_cast<int>(items.size()) - succeeded - failed}};
+  write_text_atomically(output / "batch.json", summary.dump(2) + "\n");
+  return records;
+}
+
+}  // namespace recoil::cli

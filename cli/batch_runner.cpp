@@ -1,0 +1,188 @@
+#include "cli/batch_runner.h"
+
+#include <fcntl.h>
+#include <sys/prctl.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <csignal>
+#include <cstring>
+#include <deque>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "cli/interrupt.h"
+#include "cli/output_dir.h"
+#include "cli/progress.h"
+#include "core/error.h"
+
+namespace recoil::cli {
+namespace fs = std::filesystem;
+namespace {
+
+struct Running {
+  const BatchItem* item;
+  fs::path partial;
+  std::chrono::steady_clock::time_point start;
+};
+
+// The item's command line, with its output folder and its share of the cores.
+std::vector<std::string> child_arguments(const BatchItem& item, const fs::path& partial, int threads) {
+  std::vector<std::string> args = item.args;
+  args.insert(args.end(), {"-o", partial.string()});
+  const bool takes_threads = item.mode == "run" || item.mode == "drop";
+  if (takes_threads && std::find(args.begin(), args.end(), "--threads") == args.end())
+    args.insert(args.end(), {"--threads", std::to_string(threads)});
+  return args;
+}
+
+// Starts `recoil ARGS` with stderr to `log` (stdin and stdout closed off);
+// it is stopped with SIGTERM if this process dies first.
+pid_t start_child(const std::vector<std::string>& args, const fs::path& log, int threads) {
+  std::vector<std::string> line = {"recoil"};
+  line.insert(line.end(), args.begin(), args.end());
+  std::vector<char*> argv;
+  for (std::string& a : line) argv.push_back(a.data());
+  argv.push_back(nullptr);
+  const std::string lp_threads = std::to_string(threads);
+  const pid_t parent = ::getpid();
+  const pid_t pid = ::fork();
+  if (pid < 0) throw Error(ErrorKind::internal, std::string("cannot start an item process: ") + std::strerror(errno));
+  if (pid == 0) {
+    ::prctl(PR_SET_PDEATHSIG, SIGTERM);
+    if (::getppid() != parent) ::_exit(143);  // the batch died before the line above took effect
+    const int null = ::open("/dev/null", O_RDWR);
+    const int err = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
+    if (null < 0 || err < 0) ::_exit(4);
+    ::dup2(null, 0);
+    ::dup2(null, 1);
+    ::dup2(err, 2);
+    // llvmpipe's rasteriser threads, so that concurrent items share the cores rather than oversubscribe them.
+    ::setenv("LP_NUM_THREADS", lp_threads.c_str(), 1);
+    ::execv("/proc/self/exe", argv.data());
+    ::_exit(5);
+  }
+  return pid;
+}
+
+// The item's own error line ("recoil: error: ..."), or a description of how it ended.
+std::string failure_message(const fs::path& log, int status) {
+  std::ifstream in(log);
+  std::string line, found;
+  while (std::getline(in, line))
+    if (line.rfind("recoil: ", 0) == 0 && line.find("error") != std::string::npos) found = line.substr(8);
+  if (!found.empty()) return found.rfind("error: ", 0) == 0 ? found.substr(7) : found;
+  if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+  return "exit " + std::to_string(WEXITSTATUS(status));
+}
+
+void remove_or_throw(const fs::path& path) {
+  std::error_code ec;
+  fs::remove_all(path, ec);
+  if (ec) throw output_error("cannot remove " + path.string() + ": " + ec.message());
+}
+
+// Records how the item ended and moves its folder into place.
+ItemRecord finish_item(const Running& run, int status, const Shard& shard, const fs::path& output) {
+  ItemRecord r;
+  r.index = run.item->index;
+  r.name = run.item->name;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.status = r.exit_code == 0 ? "succeeded" : "failed";
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run.start).count();
+  if (r.exit_code != 0) r.message = failure_message(run.partial / "log.txt", status);
+  r.shard = shard.text();
+  write_item_record(run.partial, r);
+  const fs::path final_dir = output / run.item->name;
+  remove_or_throw(final_dir);  // an earlier failure's record
+  std::error_code ec;
+  fs::rename(run.partial, final_dir, ec);
+  if (ec) throw output_error("cannot move " + run.partial.string() + " to " + final_dir.string() + ": " + ec.message());
+  return r;
+}
+
+void report_item(const ItemRecord& r, const GlobalOptions& global) {
+  if (global.log_json) {
+    const nlohmann::json line = {{"command", "batch"},       {"event", "item"},   {"index", r.index},
+                                 {"name", r.name},           {"status", r.status}, {"exit_code", r.exit_code},
+                                 {"seconds", r.seconds},     {"message", r.message}, {"shard", r.shard}};
+    std::cerr << line.dump() << std::endl;
+  } else if (!global.quiet && !r.succeeded()) {
+    std::cerr << "recoil: batch: item " << r.index << " (" << r.name << ") failed with exit " << r.exit_code << ": "
+              << r.message << "\n";
+  }
+}
+
+}  // namespace
+
+std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, const BatchRunOptions& options,
+                                        const GlobalOptions& global) {
+  ensure_output_dir(options.output);
+  std::map<int, ItemRecord> records;
+  std::deque<const BatchItem*> todo;
+  for (const BatchItem& item : items) {
+    if (!options.shard.keeps(item.index)) continue;
+    const std::optional<ItemRecord> done = read_item_record(options.output / item.name);
+    if (done && done->succeeded()) records[item.index] = *done;
+    else todo.push_back(&item);
+  }
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
+  const int threads = std::max(1, cores / jobs);
+
+  const InterruptScope interrupts;
+  Progress progress(global, "batch", static_cast<int>(records.size() + todo.size()));
+  progress.update(static_cast<int>(records.size()));
+  std::map<pid_t, Running> running;
+  int done = static_cast<int>(records.size());
+  while (!todo.empty() || !running.empty()) {
+    while (!todo.empty() && static_cast<int>(running.size()) < jobs && !pending_interrupt()) {
+      const BatchItem& item = *todo.front();
+      todo.pop_front();
+      const fs::path partial = options.output / (item.name + ".partial");
+      remove_or_throw(partial);  // what a killed run left
+      ensure_output_dir(partial);
+      const pid_t pid = start_child(child_arguments(item, partial, threads), partial / "log.txt", threads);
+      running[pid] = {&item, partial, std::chrono::steady_clock::now()};
+    }
+    if (pending_interrupt()) {
+      for (const auto& [pid, run] : running) ::kill(pid, SIGTERM);
+      for (const auto& [pid, run] : running) ::waitpid(pid, nullptr, 0);
+      progress.finish();
+      const int sig = pending_interrupt();
+      throw Interrupted(sig, "interrupted by " + signal_name(sig) + " after " + std::to_string(done) + " items; " +
+                                 "a rerun skips the finished ones");
+    }
+    int status = 0;
+    const pid_t pid = ::waitpid(-1, &status, WNOHANG);
+    if (pid <= 0) {
+      if (progress.due()) progress.working(std::to_string(running.size()) + " running");
+      std::this_thread::sleep_for(std::chrono::milliseconds(20));
+      continue;
+    }
+    const auto it = running.find(pid);
+    if (it == running.end()) continue;
+    const ItemRecord r = finish_item(it->second, status, options.shard, options.output);
+    running.erase(it);
+    records[r.index] = r;
+    report_item(r, global);
+    progress.update(++done);
+  }
+  progress.finish();
+  std::vector<ItemRecord> out;
+  for (const auto& [index, r] : records) out.push_back(r);
+  return out;
+}
+
+int batch_exit_code(const std::vector<ItemRecord>& records) {
+  int code = 0;
+  for (const ItemRecord& r : records) code = std::max(code, r.exit_code > 5 ? 5 : r.exit_code);
+  return code;
+}
+
+}  // namespace recoil::cli

@@ -1,0 +1,221 @@
+// `recoil batch` end to end: a folder of real meshes from assimp-testmodels,
+// restarts (after a kill -9 too), shards, manifest errors and the contact sheet.
+#include <gtest/gtest.h>
+#include <signal.h>
+
+#include <chrono>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
+#include <thread>
+
+#include "render/png.h"
+#include "tests/test_support.h"
+
+namespace recoil::test {
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace {
+
+const fs::path kModels = "/usr/share/assimp/models";
+
+json read_json(const fs::path& path) { return json::parse(file_bytes(path)); }
+
+// The "event": "item" lines of a --log-json run.
+std::vector<json> item_events(const std::string& err) {
+  std::vector<json> events;
+  std::istringstream lines(err);
+  for (std::string line; std::getline(lines, line);) {
+    const json j = json::parse(line, nullptr, false);
+    if (j.is_object() && j.value("event", "") == "item") events.push_back(j);
+  }
+  return events;
+}
+
+void write_text(const fs::path& path, const std::string& text) { std::ofstream(path) << text; }
+
+// A manifest of `n` small turntables of the cube (one frame, 64x48).
+fs::path cube_manifest(const fs::path& dir, int n) {
+  json items = json::array();
+  for (int i = 0; i < n; ++i)
+    items.push_back({{"mesh", (kModels / "OFF/Cube.off").string()}, {"frames", 1}, {"resolution", "64x48"},
+                     {"name", "cube" + std::to_string(i)}});
+  write_text(dir / "m.json", items.dump());
+  return dir / "m.json";
+}
+
+}  // namespace
+
+TEST(BatchCommand, FolderOfRealMeshesRendersTheValidOnesAndRecordsTheBroken) {
+  const fs::path dir = scratch_dir("batch_folder");
+  const std::vector<std::string> valid = {
+      "OBJ/box.obj",           "OBJ/WusonOBJ.obj",     "OBJ/spider.obj",          "OBJ/concave_polygon.obj",
+      "OFF/Cube.off",          "OFF/Wuson.off",        "PLY/cube_binary.ply",     "PLY/Wuson.ply",
+      "STL/Spider_ascii.stl",  "STL/sphereWithHole.stl", "STL/triangle.stl",      "Collada/duck.dae",
+      "Collada/sphere.dae",    "glTF2/BoxTextured-glTF-Binary/BoxTextured.glb"};
+  const std::vector<std::string> broken = {"OFF/invalid.off",      "invalid/empty.ply", "invalid/empty.off",
+                                           "invalid/OutOfMemory.off", "invalid/malformed.obj", "PLY/points.ply",
+                                           "OBJ/testpoints.obj",   "glTF2/IndexOutOfRange/IndexOutOfRange.gltf"};
+  fs::create_directories(dir / "in");
+  for (const auto& list : {valid, broken})
+    for (const std::string& f : list) fs::copy_file(kModels / f, dir / "in" / fs::path(f).filename());
+  ASSERT_GE(valid.size() + broken.size(), 20u);
+
+  const CommandResult r =
+      run_recoil("batch " + shell_quote(dir / "in") + " -o " + shell_quote(dir / "out") +
+                 " --set frames=1 --set resolution=64x48 --jobs 2 --log-json --contact-sheet " +
+                 shell_quote(dir / "sheet.png"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;  // every broken file is bad input
+  const json summary = read_json(dir / "out/batch.json");
+  ASSERT_EQ(summary["items"].size(), valid.size() + broken.size());
+  EXPECT_EQ(summary["succeeded"], valid.size());
+  EXPECT_EQ(summary["failed"], broken.size());
+  std::set<std::string> broken_files;
+  for (const std::string& f : broken) broken_files.insert(fs::path(f).filename().string());
+  for (const json& item : summary["items"]) {
+    const std::string file = fs::path(item["command"][1].get<std::string>()).filename().string();
+    const fs::path out = item["output"].get<std::string>();
+    if (broken_files.count(file)) {
+      EXPECT_EQ(item["status"], "failed") << file;
+      EXPECT_EQ(item["exit_code"], 2) << file;
+      EXPECT_NE(item["message"].get<std::string>().find(file), std::string::npos) << file << ": " << item["message"];
+    } else {
+      EXPECT_EQ(item["status"], "succeeded") << file << ": " << item["message"];
+      EXPECT_TRUE(fs::exists(out / "frame_0001.png")) << file;
+    }
+  }
+  EXPECT_EQ(item_events(r.err).size(), valid.size() + broken.size());
+  const render::Image sheet = render::read_png(dir / "sheet.png");
+  EXPECT_GT(sheet.width, 4 * 256);  // a grid, not one tile
+  EXPECT_GT(sheet.height, 3 * 144);
+}
+
+TEST(BatchCommand, RerunSkipsCompleteItemsAndRedoesPartialAndFailedOnes) {
+  const fs::path dir = scratch_dir("batch_rerun");
+  const fs::path manifest = cube_manifest(dir, 4);
+  const std::string args = "batch " + shell_quote(manifest) + " -o " + shell_quote(dir / "out") + " --log-json";
+  ASSERT_EQ(run_recoil(args).exit_code, 0);
+  // What a kill leaves: an item folder without its marker, a half-written one beside it, a failure record.
+  fs::remove(dir / "out/cube1/item.json");
+  fs::create_directories(dir / "out/cube2.partial");
+  write_text(dir / "out/cube2.partial/frame_0001.png", "half");
+  fs::remove_all(dir / "out/cube2");
+  write_text(dir / "out/cube3/item.json", json{{"status", "failed"}, {"exit_code", 4}}.dump());
+  const CommandResult again = run_recoil(args);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  std::set<int> ran;
+  for (const json& e : item_events(again.err)) ran.insert(e["index"].get<int>());
+  EXPECT_EQ(ran, (std::set<int>{1, 2, 3}));
+  EXPECT_FALSE(fs::exists(dir / "out/cube2.partial"));
+  for (int i = 0; i < 4; ++i)
+    EXPECT_EQ(read_json(dir / ("out/cube" + std::to_string(i)) / "item.json")["status"], "succeeded") << i;
+}
+
+TEST(BatchCommand, KillNineLosesAtMostTheItemsInFlight) {
+  const fs::path dir = scratch_dir("batch_kill");
+  json items = json::array();
+  for (int i = 0; i < 4; ++i)
+    items.push_back({{"mesh", source_path("assets/meshes/bunny.obj").string()}, {"mode", "drop"},
+                     {"material", "rigid"}, {"seconds", 0.4}, {"no-render", true}, {"name", "b" + std::to_string(i)}});
+  write_text(dir / "m.json", items.dump());
+  const std::string args = "batch " + shell_quote(dir / "m.json") + " -o " + shell_quote(dir / "out");
+  // Started in the background, killed with SIGKILL once the first item is complete.
+  const fs::path pid_file = dir / "pid";
+  write_text(dir / "start.sh", "'" RECOIL_BINARY "' " + args + " -q </dev/null >/dev/null 2>&1 &\necho $! > " +
+                                  shell_quote(pid_file) + "\n");
+  ASSERT_EQ(std::system(("sh " + shell_quote(dir / "start.sh")).c_str()), 0);
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  const pid_t pid = std::stoi(file_bytes(pid_file));
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+  while (!fs::exists(dir / "out/b0/item.json") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(20));
+  ASSERT_TRUE(fs::exists(dir / "out/b0/item.json"));
+  ::kill(pid, SIGKILL);
+  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the orphaned item stops on its parent's death
+  const json first = read_json(dir / "out/b0/item.json");
+  const CommandResult again = run_recoil(args + " --log-json");
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  std::set<int> ran;
+  for (const json& e : item_events(again.err)) ran.insert(e["index"].get<int>());
+  EXPECT_FALSE(ran.count(0));  // complete before the kill: not run again
+  for (int i = 1; i < 4; ++i) EXPECT_TRUE(ran.count(i) || fs::exists(dir / ("out/b" + std::to_string(i)) / "item.json"));
+  EXPECT_EQ(read_json(dir / "out/b0/item.json"), first);
+  for (int i = 0; i < 4; ++i) {
+    EXPECT_EQ(read_json(dir / ("out/b" + std::to_string(i)) / "item.json")["status"], "succeeded") << i;
+    EXPECT_FALSE(fs::exists(dir / ("out/b" + std::to_string(i) + ".partial"))) << i;
+  }
+}
+
+TEST(BatchCommand, ShardsTakeTheirItemsFromOptionsOrTheFarmsVariables) {
+  const fs::path dir = scratch_dir("batch_shards");
+  const fs::path manifest = cube_manifest(dir, 7);
+  std::multiset<int> ran;
+  for (int shard = 0; shard < 3; ++shard) {
+    // One shard from each source: --shard, Slurm's array variables, an Indexed Job's index.
+    const std::string env = shard == 1   ? "SLURM_ARRAY_TASK_ID=1 SLURM_ARRAY_TASK_COUNT=3 "
+                            : shard == 2 ? "JOB_COMPLETION_INDEX=2 "
+                                         : "";
+    const std::string select = shard == 0 ? " --shard 0/3" : shard == 2 ? " --shard-count 3" : "";
+    const fs::path log = dir / ("shard" + std::to_string(shard) + ".log");
+    ASSERT_EQ(std::system((env + "'" RECOIL_BINARY "' batch " + shell_quote(manifest) + " -o " +
+                           shell_quote(dir / "sharded") + select + " --log-json 2>" + shell_quote(log))
+                              .c_str()),
+              0);
+    for (const json& e : item_events(file_bytes(log))) {
+      EXPECT_EQ(e["index"].get<int>() % 3, shard) << e;
+      EXPECT_EQ(e["shard"], std::to_string(shard) + "/3");
+      ran.insert(e["index"].get<int>());
+    }
+  }
+  EXPECT_EQ(ran, (std::multiset<int>{0, 1, 2, 3, 4, 5, 6}));
+  const json summary = read_json(dir / "sharded/batch.json");
+  EXPECT_EQ(summary["succeeded"], 7);
+  EXPECT_EQ(run_recoil("batch " + shell_quote(manifest) + " --shard 3/3").exit_code, 2);
+  EXPECT_EQ(run_recoil("batch " + shell_quote(manifest) + " --shard-count 3").exit_code, 2);
+}
+
+TEST(BatchCommand, ManifestErrorsNameTheItemAndTheFieldBeforeAnythingRuns) {
+  const fs::path dir = scratch_dir("batch_errors");
+  const std::string cube = (kModels / "OFF/Cube.off").string();
+  const auto error_for = [&](const json& manifest) {
+    write_text(dir / "m.json", manifest.dump());
+    const CommandResult r = run_recoil("batch " + shell_quote(dir / "m.json") + " -o " + shell_quote(dir / "out"));
+    EXPECT_EQ(r.exit_code, 2) << manifest;
+    EXPECT_FALSE(fs::exists(dir / "out")) << manifest;  // validated up front: nothing ran
+    return r.err;
+  };
+  const json ok = {{"mesh", cube}};
+  std::string e = error_for(json::array({ok, {{"mesh", cube}, {"frames", 0}}}));
+  EXPECT_NE(e.find("m.json: /1/frames:"), std::string::npos) << e;
+  e = error_for(json::array({ok, ok, {{"mesh", cube}, {"frame", 3}}}));
+  EXPECT_NE(e.find("/2/frame:"), std::string::npos) << e;
+  EXPECT_NE(e.find("did you mean \"frames\""), std::string::npos) << e;
+  e = error_for(json::array({{{"mesh", cube}, {"mode", "spin"}}}));
+  EXPECT_NE(e.find("/0/mode:"), std::string::npos) << e;
+  e = error_for(json::array({{{"mesh", cube}, {"no-ground", "yes"}}}));
+  EXPECT_NE(e.find("/0/no-ground:"), std::string::npos) << e;
+  e = error_for(json::array({{{"scene", "a.json"}, {"mesh", cube}}}));
+  EXPECT_NE(e.find("/0:"), std::string::npos) << e;
+  e = error_for(json::object({{"mesh", cube}}));
+  EXPECT_NE(e.find("JSON list"), std::string::npos) << e;
+}
+
+TEST(BatchCommand, ContactSheetIsRebuiltFromFinishedOutputsAlone) {
+  const fs::path dir = scratch_dir("batch_sheet");
+  const fs::path manifest = cube_manifest(dir, 3);
+  const std::string base = "batch " + shell_quote(manifest) + " -o " + shell_quote(dir / "out");
+  ASSERT_EQ(run_recoil(base + " --shard 0/2").exit_code, 0);
+  ASSERT_EQ(run_recoil(base + " --shard 1/2").exit_code, 0);
+  const CommandResult r = run_recoil(base + " --contact-sheet-only --contact-sheet " + shell_quote(dir / "sheet.png"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_EQ(read_json(dir / "out/batch.json")["succeeded"], 3);
+  const render::Image sheet = render::read_png(dir / "sheet.png");
+  EXPECT_GT(sheet.width, 256);
+  // The same outputs give the same sheet, byte for byte.
+  ASSERT_EQ(run_recoil(base + " --contact-sheet-only --contact-sheet " + shell_quote(dir / "again.png")).exit_code, 0);
+  EXPECT_EQ(file_bytes(dir / "sheet.png"), file_bytes(dir / "again.png"));
+}
+
+}  // namespace recoil::test
