@@ -167,6 +167,10 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
     }
     const auto it = running.find(pid);
     if (it == running.end()) continue;
+    if (pending_interrupt()) {  // it stopped for the same signal: left partial, for the rerun
+      running.erase(it);
+      continue;
+    }
     const ItemRecord r = finish_item(it->second, status, options.shard, options.output);
     running.erase(it);
     records[r.index] = r;
