@@ -2,9 +2,11 @@
 // restarts (after a kill -9 too), shards, manifest errors and the contact sheet.
 #include <gtest/gtest.h>
 #include <signal.h>
+#include <sys/wait.h>
 
 #include <chrono>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 #include <sstream>
@@ -113,39 +115,75 @@ TEST(BatchCommand, RerunSkipsCompleteItemsAndRedoesPartialAndFailedOnes) {
     EXPECT_EQ(read_json(dir / ("out/cube" + std::to_string(i)) / "item.json")["status"], "succeeded") << i;
 }
 
-TEST(BatchCommand, KillNineLosesAtMostTheItemsInFlight) {
+// Every frame of every item folder under `out`, by relative path.
+std::map<std::string, std::string> frames_under(const fs::path& out) {
+  std::map<std::string, std::string> frames;
+  for (const auto& e : fs::recursive_directory_iterator(out))
+    if (e.path().extension() == ".png") frames[fs::relative(e.path(), out).string()] = file_bytes(e.path());
+  return frames;
+}
+
+TEST(BatchCommand, KillNineAtSeveralMomentsLosesOnlyTheItemsInFlight) {
   const fs::path dir = scratch_dir("batch_kill");
   json items = json::array();
-  for (int i = 0; i < 4; ++i)
+  for (int i = 0; i < 5; ++i)
     items.push_back({{"mesh", source_path("assets/meshes/bunny.obj").string()}, {"mode", "drop"},
-                     {"material", "rigid"}, {"seconds", 0.4}, {"no-render", true}, {"name", "b" + std::to_string(i)}});
+                     {"material", "rigid"}, {"seconds", 0.3}, {"resolution", "64x48"},
+                     {"name", "b" + std::to_string(i)}});
   write_text(dir / "m.json", items.dump());
-  const std::string args = "batch " + shell_quote(dir / "m.json") + " -o " + shell_quote(dir / "out");
-  // Started in the background, killed with SIGKILL once the first item is complete.
-  const fs::path pid_file = dir / "pid";
-  write_text(dir / "start.sh", "'" RECOIL_BINARY "' " + args + " -q </dev/null >/dev/null 2>&1 &\necho $! > " +
-                                  shell_quote(pid_file) + "\n");
-  ASSERT_EQ(std::system(("sh " + shell_quote(dir / "start.sh")).c_str()), 0);
-  std::this_thread::sleep_for(std::chrono::milliseconds(100));
-  const pid_t pid = std::stoi(file_bytes(pid_file));
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-  while (!fs::exists(dir / "out/b0/item.json") && std::chrono::steady_clock::now() < deadline)
-    std::this_thread::sleep_for(std::chrono::milliseconds(20));
-  ASSERT_TRUE(fs::exists(dir / "out/b0/item.json"));
-  ::kill(pid, SIGKILL);
-  std::this_thread::sleep_for(std::chrono::milliseconds(500));  // the orphaned item stops on its parent's death
-  const json first = read_json(dir / "out/b0/item.json");
-  const CommandResult again = run_recoil(args + " --log-json");
-  ASSERT_EQ(again.exit_code, 0) << again.err;
-  std::set<int> ran;
-  for (const json& e : item_events(again.err)) ran.insert(e["index"].get<int>());
-  EXPECT_FALSE(ran.count(0));  // complete before the kill: not run again
-  for (int i = 1; i < 4; ++i) EXPECT_TRUE(ran.count(i) || fs::exists(dir / ("out/b" + std::to_string(i)) / "item.json"));
-  EXPECT_EQ(read_json(dir / "out/b0/item.json"), first);
-  for (int i = 0; i < 4; ++i) {
-    EXPECT_EQ(read_json(dir / ("out/b" + std::to_string(i)) / "item.json")["status"], "succeeded") << i;
-    EXPECT_FALSE(fs::exists(dir / ("out/b" + std::to_string(i) + ".partial"))) << i;
+  const auto args = [&](const std::string& out) {
+    return "batch " + shell_quote(dir / "m.json") + " -o " + shell_quote(dir / out) + " --log-json";
+  };
+  ASSERT_EQ(run_recoil(args("whole")).exit_code, 0);
+
+  // Killed with SIGKILL as soon as k items are complete (k = 1, 2, 3), then run to the end.
+  std::vector<std::string> logs;
+  for (int k = 1; k <= 3; ++k) {
+    const fs::path pid_file = dir / "pid", log = dir / ("run" + std::to_string(k) + ".log");
+    write_text(dir / "start.sh", "'" RECOIL_BINARY "' " + args("out") + " </dev/null >/dev/null 2>" +
+                                    shell_quote(log) + " &\necho $! > " + shell_quote(pid_file) + "\n");
+    ASSERT_EQ(std::system(("sh " + shell_quote(dir / "start.sh")).c_str()), 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+    const pid_t pid = std::stoi(file_bytes(pid_file));
+    const auto complete = [&] {
+      int n = 0;
+      for (int i = 0; i < 5; ++i) n += fs::exists(dir / ("out/b" + std::to_string(i)) / "item.json");
+      return n;
+    };
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
+    while (complete() < k && std::chrono::steady_clock::now() < deadline)
+      std::this_thread::sleep_for(std::chrono::milliseconds(5));
+    ASSERT_GE(complete(), k);
+    ::kill(pid, SIGKILL);
+    ::waitpid(pid, nullptr, 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the orphaned item stops on its parent's death
+    logs.push_back(file_bytes(log));
   }
+  const CommandResult last = run_recoil(args("out"));
+  ASSERT_EQ(last.exit_code, 0) << last.err;
+  logs.push_back(last.err);
+
+  // No item is run again once it was complete: each index finishes in exactly one run.
+  std::multiset<int> finished;
+  for (const std::string& log : logs)
+    for (const json& e : item_events(log)) finished.insert(e["index"].get<int>());
+  EXPECT_EQ(finished, (std::multiset<int>{0, 1, 2, 3, 4}));
+  const std::map<std::string, std::string> whole = frames_under(dir / "whole"), resumed = frames_under(dir / "out");
+  EXPECT_GT(whole.size(), 5u);
+  EXPECT_TRUE(whole == resumed) << whole.size() << " frames uninterrupted, " << resumed.size() << " after the kills";
+  for (int i = 0; i < 5; ++i) EXPECT_FALSE(fs::exists(dir / ("out/b" + std::to_string(i) + ".partial"))) << i;
+}
+
+TEST(BatchCommand, FourShardsGiveExactlyTheUnshardedRun) {
+  const fs::path dir = scratch_dir("batch_four_shards");
+  const fs::path manifest = cube_manifest(dir, 9);
+  ASSERT_EQ(run_recoil("batch " + shell_quote(manifest) + " -o " + shell_quote(dir / "whole")).exit_code, 0);
+  for (int i = 0; i < 4; ++i)
+    ASSERT_EQ(run_recoil("batch " + shell_quote(manifest) + " -o " + shell_quote(dir / "sharded") + " --shard " +
+                         std::to_string(i) + "/4").exit_code,
+              0);
+  EXPECT_TRUE(frames_under(dir / "whole") == frames_under(dir / "sharded"));
+  EXPECT_EQ(read_json(dir / "sharded/batch.json")["succeeded"], 9);
 }
 
 TEST(BatchCommand, ShardsTakeTheirItemsFromOptionsOrTheFarmsVariables) {
