@@ -102,6 +102,9 @@ void check_ascii_list_counts(std::istream& body, const std::vector<PlyElement>& 
 // `head` starts at the magic, `head_offset` bytes into the file at `path`.
 void check_ply(const std::string& head, size_t head_offset, const std::filesystem::path& path, std::uintmax_t file_size,
                const std::string& name) {
+  // A header is text; past a NUL byte assimp 5.2 may search for end_header forever.
+  if (head.find('\0') < head.find("end_header"))
+    throw bad_input(name + ": PLY header holds a NUL byte (a header is text)");
   // assimp ends a header line at '\n', '\r', form feed or NUL.
   constexpr std::string_view kLineEnd("\n\r\f\0", 4);
   size_t next = std::min(head.find_first_of(kLineEnd), head.size());  // past "ply"
