@@ -133,7 +133,7 @@ void add_batch_command(CLI::App& app, const GlobalOptions& global, Action& actio
       "A manifest is a JSON list; each item names a \"scene\" (run) or a \"mesh\" with \"mode\"\n"
       "\"turntable\" (default) or \"drop\", and any options of that command by their long name:\n"
       "  [{\"scene\": \"scenes/stack.json\", \"frames\": \"1-48\"},\n"
-      "   {\"mesh\": \"statue.glb\", \"frames\": 60, \"up\": \"+Z\"},\n"
+      "   {\"mesh\": \"statue.glb\", \"turn-frames\": 60, \"up\": \"+Z\"},\n"
       "   {\"mesh\": \"bunny.obj\", \"mode\": \"drop\", \"material\": \"jelly\", \"no-render\": true}]\n"
       "Paths are relative to the manifest. A folder means every mesh file in it, as turntables.\n"
       "Each item writes into OUT/NAME/ (NAME from its file, made unique: cube, cube-2) and is\n"
@@ -144,7 +144,7 @@ void add_batch_command(CLI::App& app, const GlobalOptions& global, Action& actio
       "On a farm, each array task runs one shard: Slurm's SLURM_ARRAY_TASK_ID/COUNT are read\n"
       "without options; a Kubernetes Indexed Job gives JOB_COMPLETION_INDEX, with --shard-count.\n\n"
       "Examples:\n"
-      "  recoil batch assets/ --set frames=48 --set resolution=640x360 --contact-sheet sheet.png\n"
+      "  recoil batch assets/ --set turn-frames=48 --set resolution=640x360 --contact-sheet sheet.png\n"
       "  recoil batch manifest.json -o previews/ --jobs 2\n"
       "  recoil batch manifest.json -o previews/ --shard 1/4\n"
       "  recoil batch manifest.json -o previews/ --contact-sheet-only --contact-sheet sheet.png\n");

@@ -108,6 +108,8 @@ nlohmann::json build_drop_scene(const DropSettings& settings) {
     if (settings.material == "rigid") {
       body["type"] = "rigid";
       body["density"] = 1000;
+    } else if (settings.material == "static") {
+      body["type"] = "static";
     } else {
       body["type"] = "deformable";
       body["material"] = material_json(settings.material);

@@ -13,7 +13,7 @@ namespace recoil::cli {
 
 struct DropSettings {
   std::vector<std::string> meshes;
-  std::string material = "soft";  // soft | rubber | jelly | stiff | rigid
+  std::string material = "soft";  // soft | rubber | jelly | stiff | rigid | static (held where it stands)
   double height = 0.3;            // m: gap between the ground and the lowest body
   double friction = 0.5;
   int count = 1;                  // copies in the pile (cycling through the meshes); 1: one of each

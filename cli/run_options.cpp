@@ -57,7 +57,18 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
 void add_run_options(CLI::App& command, RunOptions& options) {
   options.command = &command;
   command.add_option("-o,--output", options.output, "Output folder (default: output/<scene name>/)");
-  command.add_option("--frames", options.frames, "Frames to write: 1-100, 1-100:5, 1,3,7-9 (default: all)");
+  command.add_option("--frames", options.frames, "Frames to write: 1-100, 1-100:5, 1,3,7-9 (default: all)")
+      ->check(CLI::Validator(
+          [](const std::string& spec) {
+            try {
+              parse_frame_spec(spec);
+              return std::string();
+            } catch (const Error& e) {
+              const std::string message = e.what();  // "--frames: why"; CLI11 names the option itself
+              return message.substr(message.find(": ") + 2);
+            }
+          },
+          "SPEC"));
   command.add_option("--solver", options.solver, "Contact solver (default: the scene's)")
       ->check(CLI::IsMember({"cr", "pgs", "cr-plain"}));
   command.add_flag("--no-render", options.no_render, "Simulate and write statistics only, no frames");

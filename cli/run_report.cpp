@@ -55,6 +55,7 @@ void RunReport::finish(const sim::World& world, const RunResult& result, double 
   m_tail = {{"frames", {{"written", result.frames_written}, {"skipped", result.frames_skipped}}},
             {"steps", result.steps},
             {"simulated_seconds", world.time()},
+            {"settle", {{"limit_s", result.settle_limit}, {"time_s", result.settle_time}, {"at_rest", result.settled}}},
             {"counters",
              {{"steps", c.steps},
               {"solver_not_converged", c.solver_not_converged},

@@ -305,12 +305,17 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
     return;
   }
 
-  out.color = body.has("color") ? parse_body_color(body.child("color")) : palette_color(so_far.mesh_bodies++);
-  if (!body.has("color")) {
+  if (body.has("color")) {
+    out.color = parse_body_color(body.child("color"));
+  } else {
+    // The palette colour as the resolved scene records it, so that rerunning
+    // that scene draws the same bytes.
+    const render::Rgb palette = palette_color(so_far.mesh_bodies++);
     char hex[8];
-    std::snprintf(hex, sizeof(hex), "#%02x%02x%02x", static_cast<int>(std::lround(out.color[0] * 255)),
-                  static_cast<int>(std::lround(out.color[1] * 255)), static_cast<int>(std::lround(out.color[2] * 255)));
+    std::snprintf(hex, sizeof(hex), "#%02x%02x%02x", static_cast<int>(std::lround(palette[0] * 255)),
+                  static_cast<int>(std::lround(palette[1] * 255)), static_cast<int>(std::lround(palette[2] * 255)));
     body.string_or("color", hex);
+    out.color = parse_color(hex, "color");
   }
   out.opacity = static_cast<float>(body.number_in_or("opacity", 1.0, {0.0, 1.0}));
   Geometry geometry = parse_geometry(body, base_dir, so_far.files);

@@ -53,7 +53,10 @@ struct SceneDesc {
   std::string name;
   std::filesystem::path file;   // where it was read from (empty when built in memory)
   sim::WorldDesc world;
-  double duration = 3.0;        // s of simulated time; frames cover [0, duration]
+  double duration = 3.0;        // s of simulated time; frames cover [0, duration] after the settling
+  // s: at most this long is simulated before frame 1, ending once every
+  // dynamic body is at rest (cli/rest_watch.h); 0: frame 1 is the initial state.
+  double settle = 0.0;
   std::vector<SceneBody> bodies;  // scene order, planes included
   RenderOptions render;         // resolution, fps, msaa, shadows, background, ...
   bool grid = true;             // grid lines on the ground

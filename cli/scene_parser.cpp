@@ -14,10 +14,11 @@ namespace fs = std::filesystem;
 namespace {
 
 void parse_simulation(const JsonCursor& c, SceneDesc& scene) {
-  c.expect_object({"dt", "duration", "gravity", "solver", "contact"});
+  c.expect_object({"dt", "duration", "settle", "gravity", "solver", "contact"});
   sim::WorldDesc& w = scene.world;
   w.dt = c.number_in_or("dt", w.dt, kTimeStepRange);
   scene.duration = c.number_in_or("duration", 3.0, kDurationRange);
+  scene.settle = c.number_in_or("settle", 0.0, kDurationRange);
   w.gravity = c.vec3_in_or("gravity", w.gravity, kAccelerationRange);
 
   const JsonCursor solver = c.child_or_empty("solver");

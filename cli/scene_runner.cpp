@@ -12,10 +12,12 @@
 #include "cli/frame_names.h"
 #include "cli/frame_spec.h"
 #include "cli/file_io.h"
+#include "cli/format_number.h"
 #include "cli/frame_stats.h"
 #include "cli/interrupt.h"
 #include "cli/output_dir.h"
 #include "cli/progress.h"
+#include "cli/rest_watch.h"
 #include "cli/run_report.h"
 #include "cli/scene_view.h"
 #include "cli/video_encoder.h"
@@ -75,7 +77,8 @@ namespace {
 
 std::string describe_failure(const sim::StepReport& r, int frame, const std::string& what, const SceneDesc& scene) {
   std::ostringstream s;
-  s << scene.label() << ": simulation failed at frame " << frame << " (step " << r.step << ", t = " << r.time << " s): body '" << r.body
+  s << scene.label() << ": simulation failed " << (frame > 0 ? "at frame " + std::to_string(frame) : "while settling")
+    << " (step " << r.step << ", t = " << r.time << " s): body '" << r.body
     << "': " << what;
   return s.str();
 }
@@ -113,6 +116,9 @@ std::string describe_warnings(const SolveQuality& q) {
 
 std::string describe_run_warnings(const RunResult& result) {
   std::string text = describe_warnings(result.quality);
+  if (result.still_moving())
+    text += std::string(text.empty() ? "" : "; ") + "still moving after settling " +
+            format_number("%g", result.settle_limit) + " s (a longer settle lets it come to rest)";
   if (result.open_meshes.empty()) return text;
   text += std::string(text.empty() ? "" : "; ") + (result.open_meshes.size() == 1 ? "open mesh: " : "open meshes: ");
   // A pile of a thousand copies names three of them and counts the rest.
@@ -167,7 +173,6 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     }
     const render::FrameWriterSize size = render::default_frame_writer_size();
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), size.threads, size.capacity);
-    view = std::make_unique<SceneView>(scene, world->surfaces(), static_cast<double>(settings.width) / settings.height);
   }
 
   // Outputs only once the world and the renderer exist: a refused scene writes nothing.
@@ -188,44 +193,68 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   RunResult result;
   for (const SceneBody& body : scene.bodies)
     if (body.open_mesh) result.open_meshes.push_back(body.name);
+  result.settle_limit = scene.settle;
   size_t next = 0;  // index into selected
   long inverted_steps = 0;
   const long grace_steps = std::max(1L, static_cast<long>(std::ceil(kInversionGrace / dt)));
+  // One step, with its failure checks; false once the run has failed. `frame`
+  // is the frame being stepped towards (0 while settling), for the message.
+  auto advance = [&](FrameAccumulator& acc, int frame) {
+    const sim::StepReport r = world->step();
+    acc.add(r);
+    report.add_step(r);
+    if (r.status == sim::StepStatus::inverted) ++inverted_steps;
+    else if (r.status == sim::StepStatus::ok) inverted_steps = 0;
+    if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup ||
+        r.status == sim::StepStatus::runaway) {
+      result.failed = true;
+      const std::string what = r.status == sim::StepStatus::nan ? "NaN in positions or velocities"
+                               : r.status == sim::StepStatus::runaway
+                                   ? std::to_string(r.contacts) + " contact candidates, more than " +
+                                         std::to_string(sim::kMaxCandidatesPerVertex) +
+                                         " per surface vertex (the bodies crossed or folded through themselves; "
+                                         "a smaller dt or a stiffer material holds them)"
+                                   : "energy blew up (diverged)";
+      result.message = describe_failure(r, frame, what, scene);
+    } else if (r.status == sim::StepStatus::inverted && inverted_steps > grace_steps) {
+      result.failed = true;
+      std::ostringstream what;
+      what << r.inverted_tets << " inverted elements for longer than " << kInversionGrace << " s (beyond recovery)";
+      result.message = describe_failure(r, frame, what.str(), scene);
+    }
+    if (!result.failed && progress.due()) {
+      std::ostringstream life;
+      life << std::fixed << std::setprecision(3) << (frame == 0 ? "settling, " : "") << "t = " << world->time()
+           << " s, step " << r.step << ", " << std::setprecision(0) << ms_since(run_start) / 1000.0 << " s";
+      progress.working(life.str());
+    }
+    return !result.failed;
+  };
+
+  // Settling: simulated, not drawn, until every dynamic body rests or the time
+  // is up; frame 1's statistics count its steps.
+  FrameAccumulator settling;
+  if (scene.settle > 0.0) {
+    const long settle_steps = std::lround(scene.settle / dt);
+    RestWatch rest(dt);
+    while (world->counters().steps < settle_steps && !pending_interrupt() && advance(settling, 0))
+      if (rest.update(world->stats())) {
+        result.settled = true;
+        break;
+      }
+    result.settle_time = world->time();
+  }
+  const long first_step = world->counters().steps;
+  // The view frames what the first frame shows: the settled scene.
+  if (job.render)
+    view = std::make_unique<SceneView>(scene, world->surfaces(), static_cast<double>(settings.width) / settings.height);
+
   render::Image image;
   double encoded_before = 0.0;
   for (int k = 1; k <= last_frame && !result.failed && !pending_interrupt(); ++k) {
-    FrameAccumulator acc;
-    const long target = frame_step(k, fps, dt);
-    while (world->counters().steps < target && !pending_interrupt()) {
-      const sim::StepReport r = world->step();
-      acc.add(r);
-      report.add_step(r);
-      if (r.status == sim::StepStatus::inverted) ++inverted_steps;
-      else if (r.status == sim::StepStatus::ok) inverted_steps = 0;
-      if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup ||
-          r.status == sim::StepStatus::runaway) {
-        result.failed = true;
-        const std::string what = r.status == sim::StepStatus::nan ? "NaN in positions or velocities"
-                                 : r.status == sim::StepStatus::runaway
-                                     ? std::to_string(r.contacts) + " contact candidates, more than " +
-                                           std::to_string(sim::kMaxCandidatesPerVertex) +
-                                           " per surface vertex (the bodies crossed or folded through themselves; "
-                                           "a smaller dt or a stiffer material holds them)"
-                                     : "energy blew up (diverged)";
-        result.message = describe_failure(r, k, what, scene);
-      } else if (r.status == sim::StepStatus::inverted && inverted_steps > grace_steps) {
-        result.failed = true;
-        std::ostringstream what;
-        what << r.inverted_tets << " inverted elements for longer than " << kInversionGrace << " s (beyond recovery)";
-        result.message = describe_failure(r, k, what.str(), scene);
-      }
-      if (result.failed) break;
-      if (progress.due()) {
-        std::ostringstream life;
-        life << std::fixed << std::setprecision(3) << "t = " << world->time() << " s, step " << r.step << ", "
-             << std::setprecision(0) << ms_since(run_start) / 1000.0 << " s";
-        progress.working(life.str());
-      }
+    FrameAccumulator acc = k == 1 ? settling : FrameAccumulator{};
+    const long target = first_step + frame_step(k, fps, dt);
+    while (world->counters().steps < target && !pending_interrupt() && advance(acc, k)) {
     }
     if (result.failed || pending_interrupt()) break;
     if (next >= selected.size() || selected[next] != k) continue;

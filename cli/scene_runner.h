@@ -41,11 +41,16 @@ struct RunResult {
   std::string message;      // what failed, or what interrupted the run
   SolveQuality quality;
   std::vector<std::string> open_meshes;  // bodies from mesh files that are not watertight, scene order
+  double settle_limit = 0.0;  // s: the scene's settle
+  double settle_time = 0.0;   // s: simulated before frame 1
+  bool settled = false;       // every dynamic body came to rest within settle_limit
+  // Settling was asked for and ran to its end with a body still moving.
+  bool still_moving() const { return settle_limit > 0.0 && !settled && !failed && !interrupted_by; }
 };
 
 // Every warning of a run, for the summary line and run.json: the solve's
-// (describe_warnings) and the open meshes ("open mesh: 'cup' (inside by
-// winding number)"); empty when there is none.
+// (describe_warnings), a body still moving after settling, and the open meshes
+// ("open mesh: 'cup' (inside by winding number)"); empty when there is none.
 std::string describe_run_warnings(const RunResult& result);
 
 // Writes scene.json first, then frames, stats and run.json into job.output_dir

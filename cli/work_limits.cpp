@@ -80,11 +80,12 @@ void check_work_limits(const SceneDesc& scene, int last_frame, bool render, doub
   const std::string file = scene.label();
   // The run simulates up to its last frame, which --frames may put past the duration.
   const double frames = std::max(std::floor(scene.duration * scene.render.fps + 1e-9) + 1.0, double(last_frame));
-  const double steps = (frames - 1.0) / (scene.render.fps * scene.world.dt);
+  const double steps = (frames - 1.0) / (scene.render.fps * scene.world.dt) + scene.settle / scene.world.dt;
   if (steps > static_cast<double>(kMaxSteps))
     throw bad_input(file + ": /simulation/duration: " + format_number("%.3g", frames) + " frames at " +
                     format_number("%g", scene.render.fps) + " fps and dt " + format_number("%g", scene.world.dt) +
-                    " s is " + format_number("%.3g", steps) + " steps; at most " +
+                    " s" + (scene.settle > 0 ? " after " + format_number("%g", scene.settle) + " s of settling" : "") +
+                    " is " + format_number("%.3g", steps) + " steps; at most " +
                     format_number("%.0f", static_cast<double>(kMaxSteps)));
   if (frames > kMaxFrames)
     throw bad_input(file + ": /simulation/duration: " + format_number("%g", scene.duration) + " s at " +

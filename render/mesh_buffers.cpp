@@ -42,7 +42,9 @@ void MeshBuffers::upload(const RenderMesh& mesh) {
   const bool topology_changed = mesh.positions.size() != m_input_floats ||
                                 !std::equal(mesh.indices.begin(), mesh.indices.end(), m_indices.begin(), m_indices.end());
   if (topology_changed) set_topology(mesh);
+  else if (mesh.positions == m_sent_positions) return;
   m_input_floats = mesh.positions.size();
+  m_sent_positions = mesh.positions;
 
   const float* positions = mesh.positions.data();
   std::size_t floats = mesh.positions.size();

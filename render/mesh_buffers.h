@@ -1,8 +1,9 @@
 #pragma once
 // MeshBuffers: the GPU copy of one RenderMesh, kept across frames. Positions
-// and normals are re-sent every frame (bodies move and deform); the index
-// buffer only when the topology changes, which for a simulation is never
-// after the first frame. Vertices on sharp edges are split (crease_split.h)
+// and normals are re-sent whenever the positions changed (bodies move and
+// deform; a static body or a turntable's mesh is sent once); the index buffer
+// only when the topology changes, which for a simulation is never after the
+// first frame. Vertices on sharp edges are split (crease_split.h)
 // so smooth normals keep boxes boxy.
 #include <cstdint>
 #include <vector>
@@ -20,7 +21,7 @@ class MeshBuffers {
 
   MeshBuffers();
 
-  // Recomputes normals and uploads. Aborts (RECOIL_CHECK) on malformed
+  // Recomputes normals and uploads, unless the mesh is the one uploaded last. Aborts (RECOIL_CHECK) on malformed
   // arrays: positions not a multiple of 3, an index past the vertex count.
   void upload(const RenderMesh& mesh);
 
@@ -40,6 +41,7 @@ class MeshBuffers {
   std::size_t m_capacity = 0;          // floats each vertex buffer holds now
   std::size_t m_input_floats = 0;      // mesh.positions.size() of the last upload
   std::vector<std::uint32_t> m_indices;  // the mesh's own indices, to spot changes
+  std::vector<float> m_sent_positions;   // the mesh's positions as last uploaded, to spot changes
   CreaseSplit m_split;                   // render vertices and the indices drawn
   std::vector<float> m_split_positions;  // scratch: positions gathered per render vertex
   std::vector<float> m_normal_data;      // scratch, reused every frame

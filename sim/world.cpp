@@ -2,6 +2,7 @@
 
 #include <Eigen/Geometry>
 #include <Eigen/LU>
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -68,9 +69,21 @@ World::World(const WorldDesc& desc)
     m_mu_kinetic.push_back(desc.bodies[i].kinetic_friction);
     m_self_contact.push_back(desc.bodies[i].self_contact);
   }
+  // Contacts act only on degrees of freedom: without a deformable or dynamic
+  // body nothing collides, and a fixed or kinematic mesh keeps its own surface
+  // instead of paying for a simplified one.
+  const bool anything_collides =
+      !desc.bodies.empty() || std::any_of(desc.rigid_bodies.begin(), desc.rigid_bodies.end(),
+                                          [](const RigidBodyDesc& r) { return r.motion == RigidMotion::dynamic; });
   for (size_t i = 0; i < desc.rigid_bodies.size(); ++i) {
-    m_rigid.push_back(
-        build_rigid_body(desc.rigid_bodies[i], *m_device, "rigid_bodies/" + std::to_string(i), desc.contact.margin));
+    const std::string where = "rigid_bodies/" + std::to_string(i);
+    if (anything_collides) {
+      m_rigid.push_back(build_rigid_body(desc.rigid_bodies[i], *m_device, where, desc.contact.margin));
+    } else {
+      RigidBodyDesc own_surface = desc.rigid_bodies[i];
+      own_surface.collision.keep_mesh = true;
+      m_rigid.push_back(build_rigid_body(own_surface, *m_device, where, desc.contact.margin));
+    }
     if (m_rigid.back().motion == RigidMotion::dynamic) {
       m_rigid.back().linear_node = nodes;
       nodes += 2;

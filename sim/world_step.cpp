@@ -188,6 +188,8 @@ void World::collide_and_solve(StepReport& report) {
     m_memory.clear();
     return;
   }
+  // Without a degree of freedom (only static and kinematic bodies) a contact has nothing to act on.
+  if (m_x.size() == 0) return;
   auto t = Clock::now();
   ContactModel model(contact_surfaces(), contact_planes(), DofState{&m_x, &m_v, m_dt}, m_contact.margin,
                      m_detector.get());

@@ -47,7 +47,7 @@ trap finish EXIT
     [[ -r ${items[i]} ]] || fail "test mesh ${items[i]} missing (bash scripts/install-deps.sh)"
     sep=,
     [[ $((i + 2)) -lt ${#items[@]} ]] || sep=
-    printf '  {"mesh": "%s", "mode": "turntable", "frames": 2, "resolution": "64x48"}%s\n' "${items[i]}" "$sep"
+    printf '  {"mesh": "%s", "mode": "turntable", "turn-frames": 2, "resolution": "64x48"}%s\n' "${items[i]}" "$sep"
   done
   echo "]"
 } >"$work/manifest.json"

@@ -4,9 +4,12 @@
 // `recoil_bench NAME...` runs the ones whose name contains a filter.
 // Benchmarks report, they never assert: speed is not a test.
 #include <chrono>
+#include <filesystem>
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "sim/geometry/tri_mesh.h"
 
 namespace recoil::bench {
 
@@ -32,6 +35,9 @@ class BenchTable {
   std::vector<std::string> m_columns;
   std::vector<std::vector<std::string>> m_rows;
 };
+
+// Writes `mesh` as an OFF file, for the benches that run recoil on a file.
+void write_off(const sim::TriMesh& mesh, const std::filesystem::path& path);
 
 // Formats a number with `digits` after the point.
 std::string fixed(double value, int digits = 1);

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <cstdio>
+#include <fstream>
 #include <iostream>
 #include <map>
 
@@ -23,6 +24,16 @@ double best_ms(int repeats, const std::function<void()>& fn) {
     best = std::min(best, elapsed.count());
   }
   return best;
+}
+
+void write_off(const sim::TriMesh& mesh, const std::filesystem::path& path) {
+  std::ofstream out(path);
+  out << "OFF\n" << mesh.num_vertices() << " " << mesh.num_triangles() << " 0\n";
+  out.precision(9);
+  for (int v = 0; v < mesh.num_vertices(); ++v)
+    out << mesh.vertices(v, 0) << " " << mesh.vertices(v, 1) << " " << mesh.vertices(v, 2) << "\n";
+  for (int f = 0; f < mesh.num_triangles(); ++f)
+    out << "3 " << mesh.triangles(f, 0) << " " << mesh.triangles(f, 1) << " " << mesh.triangles(f, 2) << "\n";
 }
 
 BenchTable::BenchTable(std::string title, std::vector<std::string> columns)

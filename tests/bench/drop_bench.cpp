@@ -22,16 +22,6 @@ namespace {
 
 namespace fs = std::filesystem;
 
-void write_off(const sim::TriMesh& mesh, const fs::path& path) {
-  std::ofstream out(path);
-  out << "OFF\n" << mesh.num_vertices() << " " << mesh.num_triangles() << " 0\n";
-  out.precision(9);
-  for (int v = 0; v < mesh.num_vertices(); ++v)
-    out << mesh.vertices(v, 0) << " " << mesh.vertices(v, 1) << " " << mesh.vertices(v, 2) << "\n";
-  for (int f = 0; f < mesh.num_triangles(); ++f)
-    out << "3 " << mesh.triangles(f, 0) << " " << mesh.triangles(f, 1) << " " << mesh.triangles(f, 2) << "\n";
-}
-
 struct DropRun {
   bool ok = false;
   double ms_per_step = 0.0, build_ms = 0.0, peak_mib = 0.0;

@@ -1,9 +1,14 @@
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <filesystem>
 #include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+#include <sstream>
 
 #include "render/png.h"
+#include "tests/cli/box_mesh_file.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -14,15 +19,15 @@ static std::string bunny() { return shell_quote(source_path("assets/meshes/bunny
 TEST(TurntableCommand, WritesEveryFrameAtTheAskedSizeByteIdenticalAcrossRuns) {
   const fs::path a = scratch_dir("turntable_a"), b = scratch_dir("turntable_b");
   for (const fs::path& dir : {a, b}) {
-    const CommandResult r = run_recoil("turntable " + bunny() + " --frames 4 --resolution 96x64 -o " + shell_quote(dir));
+    const CommandResult r =
+        run_recoil("turntable " + bunny() + " --turn-frames 4 --resolution 96x64 -o " + shell_quote(dir));
     ASSERT_EQ(r.exit_code, 0) << r.err;
   }
-  int frames = 0;
-  for (const auto& entry : fs::directory_iterator(a)) {
-    ++frames;
-    EXPECT_EQ(entry.path().extension(), ".png") << entry.path();  // no temporary files left
-  }
-  EXPECT_EQ(frames, 4);
+  std::set<std::string> files;
+  for (const auto& entry : fs::directory_iterator(a)) files.insert(entry.path().filename().string());
+  // Every frame and what `run` writes beside them; no temporary files left.
+  EXPECT_EQ(files, (std::set<std::string>{"frame_0001.png", "frame_0002.png", "frame_0003.png", "frame_0004.png",
+                                          "run.json", "scene.json", "stats.jsonl"}));
   const render::Image first = render::read_png(a / "frame_0001.png");
   EXPECT_EQ(first.width, 96);
   EXPECT_EQ(first.height, 64);
@@ -35,7 +40,7 @@ TEST(TurntableCommand, WritesEveryFrameAtTheAskedSizeByteIdenticalAcrossRuns) {
 TEST(TurntableCommand, TransparentBackgroundAndColour) {
   const fs::path dir = scratch_dir("turntable_transparent");
   const CommandResult r = run_recoil("turntable " + bunny() +
-                                     " --frames 1 --resolution 64x64 --background transparent --color '#ff0000' -o " +
+                                     " --turn-frames 1 --resolution 64x64 --background transparent --color '#ff0000' -o " +
                                      shell_quote(dir));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const render::Image image = render::read_png(dir / "frame_0001.png");
@@ -57,8 +62,67 @@ TEST(TurntableCommand, BadInputIsExit2AndUnwritableOutputIsExit4) {
   EXPECT_EQ(run_recoil("turntable " + bunny() + " --msaa 3").exit_code, 2);
   std::ofstream(dir / "a_file") << "x";
   const CommandResult blocked =
-      run_recoil("turntable " + bunny() + " --frames 1 --resolution 32x32 -o " + shell_quote(dir / "a_file" / "sub"));
+      run_recoil("turntable " + bunny() + " --turn-frames 1 --resolution 32x32 -o " + shell_quote(dir / "a_file" / "sub"));
   EXPECT_EQ(blocked.exit_code, 4) << blocked.err;
+}
+
+// --frames picks frames of the turn as it does in `run`, and the scene.json
+// written beside them reruns the same turntable.
+TEST(TurntableCommand, FramesSelectsAsInRunAndTheSceneReruns) {
+  const fs::path dir = scratch_dir("turntable_frames");
+  const std::string size = " --resolution 64x48 --msaa 0 -q";
+  const CommandResult r =
+      run_recoil("turntable " + bunny() + " --turn-frames 8 --frames 2,5" + size + " -o " + shell_quote(dir / "a"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::set<std::string> frames;
+  for (const auto& entry : fs::directory_iterator(dir / "a"))
+    if (entry.path().extension() == ".png") frames.insert(entry.path().filename().string());
+  EXPECT_EQ(frames, (std::set<std::string>{"frame_0002.png", "frame_0005.png"}));
+  const CommandResult rerun = run_recoil("run " + shell_quote(dir / "a" / "scene.json") + " --frames 5" + size +
+                                         " -o " + shell_quote(dir / "b"));
+  ASSERT_EQ(rerun.exit_code, 0) << rerun.err;
+  EXPECT_EQ(file_bytes(dir / "a" / "frame_0005.png"), file_bytes(dir / "b" / "frame_0005.png"));
+  const CommandResult bad = run_recoil("turntable " + bunny() + " --frames 0" + size + " -o " + shell_quote(dir / "c"));
+  EXPECT_EQ(bad.exit_code, 2);
+  EXPECT_NE(bad.err.find("--frames"), std::string::npos) << bad.err;
+}
+
+// A tall box modelled leaning 25 degrees stands on one edge: --settle lets it
+// fall onto a long side and rest there before the orbit; without --settle it
+// is drawn as modelled, its lowest edge on the ground.
+TEST(TurntableCommand, SettleLaysALeaningBoxOnItsSideAtRest) {
+  const fs::path dir = scratch_dir("turntable_settle");
+  const Eigen::Matrix3d lean = Eigen::AngleAxisd(25.0 * M_PI / 180.0, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const fs::path box = write_box_off(dir / "leaning.off", Eigen::Vector3d(-0.05, -0.15, -0.05),
+                                     Eigen::Vector3d(0.05, 0.15, 0.05), false,
+                                     [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(lean * p); });
+  const std::string common = " --turn-frames 2 --resolution 48x32 --msaa 0 -q -o ";
+  const CommandResult settled = run_recoil("turntable " + shell_quote(box) + " --settle" + common + shell_quote(dir / "s"));
+  ASSERT_EQ(settled.exit_code, 0) << settled.err;
+  const nlohmann::json run = nlohmann::json::parse(file_bytes(dir / "s" / "run.json"));
+  EXPECT_TRUE(run["settle"]["at_rest"].get<bool>()) << run["settle"];
+  EXPECT_LT(run["settle"]["time_s"].get<double>(), 5.0);
+  const double margin = run["warnings"]["margin"].get<double>();
+  EXPECT_LE(run["warnings"]["max_penetration"].get<double>(), margin);
+  EXPECT_EQ(run["warnings"]["summary"], "");
+  std::istringstream lines(file_bytes(dir / "s" / "stats.jsonl"));
+  std::string line;
+  int frames = 0;
+  while (std::getline(lines, line)) {
+    const nlohmann::json body = nlohmann::json::parse(line)["bodies"][0];
+    // Lying on a 0.1 x 0.3 m side: its centre half the 0.1 m edge up, still.
+    EXPECT_NEAR(body["com"][1].get<double>(), 0.05, margin) << line;
+    const nlohmann::json v = body["velocity"];
+    EXPECT_LT(std::hypot(v[0].get<double>(), v[1].get<double>(), v[2].get<double>()), 1e-3) << line;
+    ++frames;
+  }
+  EXPECT_EQ(frames, 2);
+  const CommandResult modelled = run_recoil("turntable " + shell_quote(box) + common + shell_quote(dir / "m"));
+  ASSERT_EQ(modelled.exit_code, 0) << modelled.err;
+  EXPECT_NE(file_bytes(dir / "s" / "frame_0001.png"), file_bytes(dir / "m" / "frame_0001.png"));
+  const nlohmann::json scene = nlohmann::json::parse(file_bytes(dir / "m" / "scene.json"));
+  EXPECT_EQ(scene["bodies"][1]["type"], "static");
+  EXPECT_EQ(scene["simulation"]["settle"], 0.0);
 }
 
 }  // namespace recoil::test

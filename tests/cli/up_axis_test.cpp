@@ -104,7 +104,7 @@ TEST(UpAxis, ZUpBoxStandsTallWithUpZAndLiesWithout) {
 TEST(UpAxis, TurntableOfZUpBoxWithUpZDrawsTheYUpBox) {
   const fs::path dir = scratch_dir("up_turntable");
   const fs::path tall_z = write_tall_z(dir), tall_y = write_tall_y(dir);
-  const std::string common = " --frames 2 --resolution 48x32 --msaa 0 -q -o ";
+  const std::string common = " --turn-frames 2 --resolution 48x32 --msaa 0 -q -o ";
   const CommandResult up = run_recoil("turntable " + shell_quote(tall_z) + " --up +Z" + common + shell_quote(dir / "up"));
   ASSERT_EQ(up.exit_code, 0) << up.err;
   const CommandResult twin = run_recoil("turntable " + shell_quote(tall_y) + common + shell_quote(dir / "twin"));

@@ -1,0 +1,25 @@
+#include "cli/turntable_scene.h"
+
+#include <filesystem>
+
+#include "cli/drop_scene.h"
+
+namespace recoil::cli {
+
+nlohmann::json build_turntable_scene(const TurntableSettings& settings) {
+  DropSettings drop;
+  drop.meshes = {settings.mesh};
+  drop.material = settings.settle > 0.0 ? settings.material : "static";
+  drop.height = 0.0;  // standing on the ground: a settling mesh tips into its stable pose from there
+  drop.up = settings.up;
+  drop.seconds = (settings.turn_frames - 1) / settings.fps;
+  nlohmann::json scene = build_drop_scene(drop);
+  scene["name"] = std::filesystem::path(settings.mesh).stem().string();
+  scene["description"] = "built by recoil turntable";
+  scene["simulation"]["settle"] = settings.settle;
+  scene["render"] = {{"fps", settings.fps},
+                     {"camera", {{"mode", "orbit"}, {"azimuth", 0}, {"elevation", settings.elevation}, {"turns", 1}}}};
+  return scene;
+}
+
+}  // namespace recoil::cli
