@@ -2,7 +2,6 @@
 // runs it like `recoil run`.
 #include "cli/commands.h"
 #include "cli/drop_scene.h"
-#include "cli/file_io.h"
 #include "cli/run_options.h"
 #include "cli/scene_parser.h"
 #include "core/error.h"
@@ -12,18 +11,14 @@ namespace {
 
 struct DropCommandOptions {
   DropSettings drop;
-  std::string save_scene;
   RunOptions run;
 };
 
 int run_drop(const DropCommandOptions& options, const GlobalOptions& global) {
   const nlohmann::json document = build_drop_scene(options.drop);
-  if (!options.save_scene.empty()) {
-    write_text_atomically(options.save_scene, document.dump(2) + "\n");
-  }
-  SceneDesc scene = parse_scene(document, options.save_scene.empty() ? "drop" : options.save_scene,
-                                std::filesystem::current_path());
-  return execute_run(std::move(scene), options.run, global, "drop", "recoil drop " + options.drop.meshes.front());
+  const std::string& saved = options.run.save_scene;
+  SceneDesc scene = parse_scene(document, saved.empty() ? "drop" : saved, std::filesystem::current_path());
+  return execute_run(std::move(scene), options.run, global, "drop");
 }
 
 }  // namespace
@@ -51,7 +46,8 @@ void add_drop_command(CLI::App& app, const GlobalOptions& global, Action& action
                   "Collision surface tiled at this edge length, m (default: a quarter lattice cell, >= 2 margins)")
       ->check(CLI::PositiveNumber)
       ->excludes(triangles);
-  cmd->add_option("--save-scene", options->save_scene, "Also write the scene built, to edit and rerun with `recoil run`");
+  cmd->add_option("--save-scene", options->run.save_scene,
+                  "Also write the scene built, to edit and rerun with `recoil run`");
   add_run_options(*cmd, options->run);
   cmd->footer(
       "Meshes between 5 cm and 2 m keep their size; others are scaled to 30 cm. --up names the\n"

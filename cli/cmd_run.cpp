@@ -61,7 +61,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global, Action& action)
   cmd->callback([options, &global, &action] {
     action = [options, &global] {
       refuse_non_scene(options->scene);
-      return execute_run(load_scene(options->scene), options->run, global, "run", "recoil run " + options->scene);
+      return execute_run(load_scene(options->scene), options->run, global, "run");
     };
   });
 }

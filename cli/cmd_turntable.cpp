@@ -1,7 +1,6 @@
 // `recoil turntable MESH`: builds a turntable scene (cli/turntable_scene.cpp)
 // and runs it like `recoil run`.
 #include "cli/commands.h"
-#include "cli/file_io.h"
 #include "cli/render_options.h"
 #include "cli/run_options.h"
 #include "cli/scene_parser.h"
@@ -14,7 +13,6 @@ struct TurntableOptions {
   TurntableSettings turntable;
   bool settle = false;
   double settle_seconds = 5.0;
-  std::string save_scene;
   RunOptions run;
 };
 
@@ -23,11 +21,9 @@ int run_turntable(TurntableOptions options, const GlobalOptions& global) {
   options.turntable.settle = options.settle ? options.settle_seconds : 0.0;
   options.turntable.fps = options.run.render.fps;
   const nlohmann::json document = build_turntable_scene(options.turntable);
-  if (!options.save_scene.empty()) write_text_atomically(options.save_scene, document.dump(2) + "\n");
-  SceneDesc scene = parse_scene(document, options.save_scene.empty() ? "turntable" : options.save_scene,
-                                std::filesystem::current_path());
-  return execute_run(std::move(scene), options.run, global, "turntable",
-                     "recoil turntable " + options.turntable.mesh);
+  const std::string& saved = options.run.save_scene;
+  SceneDesc scene = parse_scene(document, saved.empty() ? "turntable" : saved, std::filesystem::current_path());
+  return execute_run(std::move(scene), options.run, global, "turntable");
 }
 
 }  // namespace
@@ -48,7 +44,8 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
       ->check(CLI::Range(0.001, 3600.0))->capture_default_str()->needs(settle);
   cmd->add_option("--material", options->turntable.material, "What a settling mesh is made of (a drop preset)")
       ->check(CLI::IsMember({"soft", "rubber", "jelly", "stiff", "rigid"}))->capture_default_str()->needs(settle);
-  cmd->add_option("--save-scene", options->save_scene, "Also write the scene built, to edit and rerun with `recoil run`");
+  cmd->add_option("--save-scene", options->run.save_scene,
+                  "Also write the scene built, to edit and rerun with `recoil run`");
   add_run_options(*cmd, options->run);
   cmd->footer(
       "The mesh is stood on a ground plane, its --up axis (default +Y) turned to world +Y, and the\n"
@@ -56,7 +53,8 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
       "--frames picks which of them to write, as in `run`. With --settle the mesh is released\n"
       "where it stands and simulated (not drawn) until it rests, at most --settle-seconds, so the\n"
       "physics picks its stable pose; the orbit then frames the resting mesh. Like `run`, it writes\n"
-      "scene.json, stats.jsonl and run.json beside the frames, and takes --video, --resume and --no-render.\n\n"
+      "scene.json, stats.jsonl and run.json beside the frames, and takes --video, --resume and --no-render.\n"
+      "As in `drop`, a mesh whose longest side is outside 5 cm - 2 m is scaled to 30 cm.\n\n"
       "Examples:\n"
       "  recoil turntable assets/meshes/bunny.obj\n"
       "  recoil turntable model.glb --turn-frames 240 --elevation 35 --resolution 1920x1080 -o preview/\n"

@@ -5,6 +5,7 @@
 // the README).
 #include <CLI/CLI.hpp>
 #include <functional>
+#include <string>
 
 namespace recoil::cli {
 
@@ -12,6 +13,7 @@ struct GlobalOptions {
   bool quiet = false;     // -q: no progress bar, no summary lines
   bool log_json = false;  // --log-json: machine-readable progress on stderr
   double max_memory_gib = 0.0;  // --max-memory: a run estimated to need more is refused; 0: 80 % of the machine's
+  std::string command_line;     // as typed, shell-quoted: run.json records it
 };
 
 using Action = std::function<int()>;

@@ -25,6 +25,7 @@ struct Source {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // local bounding-box centre, after `up`
   double bottom = 0.0;                               // local min y, after `up`
   double radius = 0.0;                               // bounding sphere of the scaled box, m
+  double size = 0.0;                                 // longest side of the scaled box, m
 };
 
 // Sizes and places the mesh as it will stand: after its up axis is turned to +Y.
@@ -41,6 +42,7 @@ Source load_source(const std::string& path, UpAxis up) {
   s.center = box.center();
   s.bottom = box.min.y();
   s.radius = 0.5 * s.scale * box.extent().norm();
+  s.size = s.scale * size;
   return s;
 }
 
@@ -96,7 +98,7 @@ nlohmann::json build_drop_scene(const DropSettings& settings) {
     const Eigen::Matrix3d R = t.rotation_matrix();
     Eigen::Vector3d position = center - R * (s.scale * s.center);
     // Unrotated bodies rest their lowest point exactly `height` above the ground.
-    if (!pile) position.y() = settings.height - s.scale * s.bottom;
+    if (!pile) position.y() = settings.height + settings.height_per_size * s.size - s.scale * s.bottom;
     nlohmann::json body = {{"name", pile || sources.size() > 1 ? s.stem + "-" + std::to_string(i + 1) : s.stem},
                            {"mesh", s.path},
                            {"up", to_string(settings.up)},

@@ -15,6 +15,10 @@ struct DropSettings {
   std::vector<std::string> meshes;
   std::string material = "soft";  // soft | rubber | jelly | stiff | rigid | static (held where it stands)
   double height = 0.3;            // m: gap between the ground and the lowest body
+  // Added to `height` for each body: this fraction of the body's longest side,
+  // so a drop from the ground clears the collision surface, which reaches a
+  // little below the drawn mesh.
+  double height_per_size = 0.0;
   double friction = 0.5;
   int count = 1;                  // copies in the pile (cycling through the meshes); 1: one of each
   double seconds = 3.0;           // simulated

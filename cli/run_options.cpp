@@ -3,6 +3,7 @@
 #include <iostream>
 #include <thread>
 
+#include "cli/file_io.h"
 #include "cli/frame_spec.h"
 #include "cli/output_dir.h"
 #include "cli/scene_runner.h"
@@ -82,8 +83,8 @@ void add_run_options(CLI::App& command, RunOptions& options) {
   add_render_options(command, options.render);
 }
 
-int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions& global, const std::string& command_name,
-                const std::string& command_line) {
+int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions& global,
+                const std::string& command_name) {
   RunJob job;
   if (!options.solver.empty()) {
     scene.world.contact.solver.method = options.solver == "pgs"        ? sim::SolverMethod::pgs
@@ -94,6 +95,7 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
   const unsigned cores = std::thread::hardware_concurrency();
   scene.world.contact.num_threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, cores));
   apply_render_overrides(options, scene);
+  if (!options.save_scene.empty()) write_text_atomically(options.save_scene, scene.resolved.dump(2) + "\n");
   if (!options.frames.empty()) job.frames = parse_frame_spec(options.frames);
   job.output_dir = options.output.empty() ? default_output_dir(scene.name) : std::filesystem::path(options.output);
   job.stats_path = options.stats;
@@ -102,7 +104,7 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
   job.resume = options.resume;
   job.strict = options.strict;
   job.label = command_name;
-  job.command = command_line;
+  job.command = global.command_line;
   job.scene = std::move(scene);
   const RunResult result = run_scene(job, global);
   // The summary line: always when it carries a warning, which -q never hides.

@@ -24,13 +24,15 @@ struct RunOptions {
   int threads = 0;         // 0: the machine's cores
   RenderOptions render;    // render options; only those given override the scene
   CLI::App* command = nullptr;  // to ask which render options were given
+  std::string save_scene;  // drop, turntable: also write the resolved scene here before running
 };
 
 void add_run_options(CLI::App& command, RunOptions& options);
 
 // Applies the options to `scene` and runs it (default output folder:
-// output/<scene name>/). Returns the exit code.
-int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions& global, const std::string& command_name,
-                const std::string& command_line);
+// output/<scene name>/); `command_name` labels the progress bar. Returns the
+// exit code.
+int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions& global,
+                const std::string& command_name);
 
 }  // namespace recoil::cli

@@ -55,7 +55,10 @@ void RunReport::finish(const sim::World& world, const RunResult& result, double 
   m_tail = {{"frames", {{"written", result.frames_written}, {"skipped", result.frames_skipped}}},
             {"steps", result.steps},
             {"simulated_seconds", world.time()},
-            {"settle", {{"limit_s", result.settle_limit}, {"time_s", result.settle_time}, {"at_rest", result.settled}}},
+            {"settle", result.settle_limit > 0.0 ? nlohmann::json{{"limit_s", result.settle_limit},
+                                                                 {"time_s", result.settle_time},
+                                                                 {"at_rest", result.settled}}
+                                                 : nlohmann::json()},
             {"counters",
              {{"steps", c.steps},
               {"solver_not_converged", c.solver_not_converged},

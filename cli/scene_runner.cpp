@@ -224,8 +224,9 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     }
     if (!result.failed && progress.due()) {
       std::ostringstream life;
-      life << std::fixed << std::setprecision(3) << (frame == 0 ? "settling, " : "") << "t = " << world->time()
-           << " s, step " << r.step << ", " << std::setprecision(0) << ms_since(run_start) / 1000.0 << " s";
+      life << std::fixed << std::setprecision(3) << "t = " << world->time() << " s";
+      if (frame == 0) life << std::defaultfloat << " (settling, at most " << scene.settle << " s)";
+      life << std::fixed << ", step " << r.step << ", " << std::setprecision(0) << ms_since(run_start) / 1000.0 << " s";
       progress.working(life.str());
     }
     return !result.failed;
@@ -269,7 +270,8 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       } else {
         const auto render_start = Clock::now();
         const render::RenderScene& drawn = view->update(world->surfaces());
-        renderer->render(drawn, view->camera(k, name_count), image);
+        // An orbit spaces the scene's own frames round the turn; frames past them go on turning.
+        renderer->render(drawn, view->camera(k, scene.frame_count()), image);
         times.render = ms_since(render_start);
         if (video) video->add(image);
         writer->submit(path, image);

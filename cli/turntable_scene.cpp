@@ -10,7 +10,11 @@ nlohmann::json build_turntable_scene(const TurntableSettings& settings) {
   DropSettings drop;
   drop.meshes = {settings.mesh};
   drop.material = settings.settle > 0.0 ? settings.material : "static";
-  drop.height = 0.0;  // standing on the ground: a settling mesh tips into its stable pose from there
+  // A static mesh stands on the ground; a settling one is released a tenth of
+  // its size above it (its collision surface may reach below the drawn mesh)
+  // and falls and tips into its stable pose.
+  drop.height = 0.0;
+  drop.height_per_size = settings.settle > 0.0 ? 0.1 : 0.0;
   drop.up = settings.up;
   drop.seconds = (settings.turn_frames - 1) / settings.fps;
   nlohmann::json scene = build_drop_scene(drop);

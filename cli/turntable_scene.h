@@ -2,8 +2,8 @@
 // The scene `recoil turntable` builds: the mesh stood on a ground plane and a
 // camera orbiting it once, run by the same frame loop as `run` and `drop`.
 // Without settling the mesh is static, as modelled; with it, the mesh is
-// released on the ground and simulated until it rests, and the orbit starts
-// there.
+// released just above the ground and simulated until it rests, and the orbit
+// starts there. Meshes are sized as `drop` sizes them.
 #include <nlohmann/json.hpp>
 #include <string>
 

@@ -82,7 +82,23 @@ TEST(TurntableCommand, FramesSelectsAsInRunAndTheSceneReruns) {
                                          " -o " + shell_quote(dir / "b"));
   ASSERT_EQ(rerun.exit_code, 0) << rerun.err;
   EXPECT_EQ(file_bytes(dir / "a" / "frame_0005.png"), file_bytes(dir / "b" / "frame_0005.png"));
-  const CommandResult bad = run_recoil("turntable " + bunny() + " --frames 0" + size + " -o " + shell_quote(dir / "c"));
+  // run.json records the whole command line.
+  const std::string command = nlohmann::json::parse(file_bytes(dir / "a" / "run.json"))["command"];
+  EXPECT_NE(command.find("--turn-frames 8 --frames 2,5"), std::string::npos) << command;
+  // --save-scene keeps the render options given, so the saved scene alone redraws the frame.
+  const CommandResult saved = run_recoil("turntable " + bunny() + " --turn-frames 8 --frames 5" + size + " --save-scene " +
+                                         shell_quote(dir / "t.json") + " -o " + shell_quote(dir / "c"));
+  ASSERT_EQ(saved.exit_code, 0) << saved.err;
+  const CommandResult from_saved =
+      run_recoil("run " + shell_quote(dir / "t.json") + " --frames 5 -q -o " + shell_quote(dir / "d"));
+  ASSERT_EQ(from_saved.exit_code, 0) << from_saved.err;
+  EXPECT_EQ(file_bytes(dir / "a" / "frame_0005.png"), file_bytes(dir / "d" / "frame_0005.png"));
+  // Frames past the turn go on turning: they do not respace the turn's own frames.
+  const CommandResult past = run_recoil("turntable " + bunny() + " --turn-frames 8 --frames 5,12" + size + " -o " +
+                                        shell_quote(dir / "e"));
+  ASSERT_EQ(past.exit_code, 0) << past.err;
+  EXPECT_EQ(file_bytes(dir / "a" / "frame_0005.png"), file_bytes(dir / "e" / "frame_0005.png"));
+  const CommandResult bad = run_recoil("turntable " + bunny() + " --frames 0" + size + " -o " + shell_quote(dir / "f"));
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--frames"), std::string::npos) << bad.err;
 }
