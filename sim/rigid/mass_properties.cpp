@@ -4,6 +4,26 @@
 
 namespace recoil::sim {
 
+namespace {
+
+// From the solid's volume (m^3), first moment (m^4) and second moment
+// integral of x x^T (m^5) about the origin.
+MassProperties from_moments(double volume, const Eigen::Vector3d& first, const Eigen::Matrix3d& second,
+                            double density) {
+  MassProperties out;
+  out.volume = volume;
+  out.mass = density * volume;
+  if (volume == 0.0) return out;
+  out.center = first / volume;
+  // Second moment about the centre, then I = tr(C) 1 - C.
+  const Eigen::Matrix3d c = density * (second - volume * out.center * out.center.transpose());
+  out.inertia = c.trace() * Eigen::Matrix3d::Identity() - c;
+  out.inertia = 0.5 * (out.inertia + out.inertia.transpose()).eval();
+  return out;
+}
+
+}  // namespace
+
 MassProperties mass_properties(const TriMesh& mesh, double density) {
   // Per tetrahedron (0, a, b, c) with D = a.(b x c) (six times its signed
   // volume): volume D/6, first moment D/24 (a+b+c), second moment
@@ -21,16 +41,29 @@ MassProperties mass_properties(const TriMesh& mesh, double density) {
     first += d / 24.0 * s;
     second += d / 120.0 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + s * s.transpose());
   }
-  MassProperties out;
-  out.volume = volume;
-  out.mass = density * volume;
-  if (volume == 0.0) return out;
-  out.center = first / volume;
-  // Second moment about the centre, then I = tr(C) 1 - C.
-  const Eigen::Matrix3d c = density * (second - volume * out.center * out.center.transpose());
-  out.inertia = c.trace() * Eigen::Matrix3d::Identity() - c;
-  out.inertia = 0.5 * (out.inertia + out.inertia.transpose()).eval();
-  return out;
+  return from_moments(volume, first, second, density);
+}
+
+MassProperties mass_properties(const TetMesh& solid, double density) {
+  // Per tetrahedron (v0..v3) of volume V: first moment V/4 s, second moment
+  // V/20 (sum_i v_i v_i^T + s s^T), with s = v0 + v1 + v2 + v3.
+  double volume = 0.0;
+  Eigen::Vector3d first = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (int t = 0; t < solid.num_tets(); ++t) {
+    const double v = tet_volume(solid.nodes, solid.tets, t);
+    Eigen::Vector3d s = Eigen::Vector3d::Zero();
+    Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector3d p = solid.nodes.row(solid.tets(t, k)).transpose();
+      s += p;
+      outer += p * p.transpose();
+    }
+    volume += v;
+    first += v / 4.0 * s;
+    second += v / 20.0 * (outer + s * s.transpose());
+  }
+  return from_moments(volume, first, second, density);
 }
 
 }  // namespace recoil::sim

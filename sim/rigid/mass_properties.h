@@ -1,9 +1,11 @@
 #pragma once
 // Mass, centre of mass and inertia tensor of a homogeneous solid bounded by a
 // closed, outward-oriented triangle surface (divergence theorem: the solid is
-// the signed sum of the tetrahedra (origin, a, b, c) over its triangles).
+// the signed sum of the tetrahedra (origin, a, b, c) over its triangles), or
+// filled by tetrahedra.
 #include <Eigen/Core>
 
+#include "sim/geometry/tet_mesh.h"
 #include "sim/geometry/tri_mesh.h"
 
 namespace recoil::sim {
@@ -17,5 +19,8 @@ struct MassProperties {
 
 // mesh: #V by 3 vertices, #F by 3 triangles (closed). density in kg/m^3.
 MassProperties mass_properties(const TriMesh& mesh, double density);
+// The same for the solid a tet mesh fills (positively oriented tets), e.g.
+// the lattice a surface that is not closed gets by its winding number.
+MassProperties mass_properties(const TetMesh& solid, double density);
 
 }  // namespace recoil::sim

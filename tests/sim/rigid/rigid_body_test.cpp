@@ -36,6 +36,30 @@ TEST(MassProperties, BoxMatchesAnalyticValues) {
   EXPECT_LT((p.inertia - Eigen::Matrix3d(p.inertia.diagonal().asDiagonal())).norm(), 1e-12 * expected.norm());
 }
 
+// The six tetrahedra round a box's main diagonal fill it exactly: the solid's
+// moments equal the closed surface's, box shifted and turned.
+TEST(MassProperties, TetrahedraOfABoxGiveItsSurfaceValues) {
+  const Eigen::Vector3d size(0.4, 0.2, 0.1), shift(1.0, -2.0, 0.5);
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  TriMesh box = make_box(size, 1);
+  transform_in_place(box, R, Eigen::Vector3d::Ones(), shift);
+  TetMesh solid;
+  solid.nodes.resize(8, 3);
+  for (int c = 0; c < 8; ++c) {  // corner c: bit 0 -> +x, bit 1 -> +y, bit 2 -> +z
+    const Eigen::Vector3d local((c & 1 ? 0.5 : -0.5) * size.x(), (c & 2 ? 0.5 : -0.5) * size.y(),
+                                (c & 4 ? 0.5 : -0.5) * size.z());
+    solid.nodes.row(c) = (R * local + shift).transpose();
+  }
+  solid.tets.resize(6, 4);
+  solid.tets << 0, 1, 3, 7, 0, 1, 5, 7, 0, 2, 3, 7, 0, 2, 6, 7, 0, 4, 5, 7, 0, 4, 6, 7;
+  for (int t = 0; t < 6; ++t)
+    if (tet_volume(solid.nodes, solid.tets, t) < 0) std::swap(solid.tets(t, 2), solid.tets(t, 3));
+  const MassProperties surface = mass_properties(box, 700.0), filled = mass_properties(solid, 700.0);
+  EXPECT_LT(relative(filled.mass, surface.mass), 1e-12);
+  EXPECT_LT((filled.center - surface.center).norm(), 1e-12);
+  EXPECT_LT((filled.inertia - surface.inertia).norm(), 1e-12 * surface.inertia.norm());
+}
+
 TEST(MassProperties, RotatedBoxInertiaIsRotated) {
   TriMesh box = make_box({0.4, 0.2, 0.1}, 1);
   const MassProperties p0 = mass_properties(box, 1000.0);
