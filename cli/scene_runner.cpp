@@ -142,7 +142,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   // Frame names keep their width whatever subset is rendered.
   const int name_count = std::max(scene.frame_count(), last_frame);
   if (!job.video.empty()) {
-    require_ffmpeg();
+    require_video(job.video);
     if (!job.render) throw bad_input("--video needs rendered frames; drop --no-render");
   }
 

@@ -3,6 +3,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <cctype>
 #include <csignal>
 #include <cstdlib>
 #include <sstream>
@@ -37,28 +38,61 @@ fs::path find_ffmpeg() {
   return {};
 }
 
-void require_ffmpeg() {
+namespace {
+
+struct VideoFormat {
+  const char* extension;
+  const char* muxer;  // ffmpeg's -f
+  const char* codec;  // what follows the input in the ffmpeg command
+};
+
+// Even sizes for the 4:2:0 codecs; a GIF keeps its size and gets one palette for the clip.
+constexpr const char* kH264 = "-c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'";
+const VideoFormat kFormats[] = {
+    {".mp4", "mp4", kH264},
+    {".mov", "mov", kH264},
+    {".mkv", "matroska", kH264},
+    {".webm", "webm", "-c:v libvpx-vp9 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'"},
+    {".gif", "gif", "-filter_complex 'split[a][b];[a]palettegen=reserve_transparent=0[p];[b][p]paletteuse'"},
+};
+
+const VideoFormat* format_of(const fs::path& path) {
+  std::string extension = path.extension().string();
+  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  for (const VideoFormat& f : kFormats)
+    if (extension == f.extension) return &f;
+  return nullptr;
+}
+
+}  // namespace
+
+void require_video(const fs::path& path) {
+  if (!format_of(path))
+    throw bad_input("--video: cannot write '" + path.filename().string() +
+                    "'; name the file .mp4, .mov, .mkv, .webm or .gif");
   if (find_ffmpeg().empty())
-    throw bad_input("--video needs ffmpeg, which is not installed; install it with: scripts/install-deps.sh --video");
+    throw bad_input("--video needs ffmpeg, which is not installed; install it with: apt-get install ffmpeg");
 }
 
 VideoEncoder::VideoEncoder(const fs::path& path, int width, int height, double fps)
-    : m_path(path), m_width(width), m_height(height) {
-  const fs::path ffmpeg = find_ffmpeg();
-  if (ffmpeg.empty()) require_ffmpeg();
+    : m_path(path), m_partial(path.string() + ".partial"), m_width(width), m_height(height) {
+  require_video(path);
+  const VideoFormat& format = *format_of(path);
   // A dead ffmpeg must surface as a write error, not kill us with SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   std::ostringstream command;
-  command << shell_quote(ffmpeg.string()) << " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgba -s "
-          << width << "x" << height << " -framerate " << fps
-          << " -i - -c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2' "
-          << shell_quote(path.string());
+  command << shell_quote(find_ffmpeg().string()) << " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgba -s "
+          << width << "x" << height << " -framerate " << fps << " -i - " << format.codec << " -f " << format.muxer
+          << " " << shell_quote(m_partial.string());
   m_pipe = ::popen(command.str().c_str(), "w");
   if (!m_pipe) throw output_error("cannot start ffmpeg for " + path.string());
 }
 
 VideoEncoder::~VideoEncoder() {
-  if (m_pipe) ::pclose(m_pipe);
+  if (!m_pipe) return;
+  ::pclose(m_pipe);
+  std::error_code ec;
+  fs::remove(m_partial, ec);
 }
 
 void VideoEncoder::add(const render::Image& image) {
@@ -73,8 +107,17 @@ void VideoEncoder::finish() {
   if (!m_pipe) return;
   const int status = ::pclose(m_pipe);
   m_pipe = nullptr;
-  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
+  std::error_code ec;
+  if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    fs::remove(m_partial, ec);
     throw output_error("ffmpeg failed to write " + m_path.string());
+  }
+  fs::rename(m_partial, m_path, ec);
+  if (ec) {
+    const std::string why = ec.message();
+    fs::remove(m_partial, ec);
+    throw output_error("cannot write " + m_path.string() + ": " + why);
+  }
 }
 
 }  // namespace recoil::cli

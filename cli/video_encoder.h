@@ -1,7 +1,11 @@
 #pragma once
-// `--video FILE.mp4`: frames piped as raw RGBA to an ffmpeg child process
-// (H.264, yuv420p). ffmpeg is an optional dependency: find_ffmpeg() lets a
-// command fail at once, before simulating, when it is missing.
+// `--video FILE`: frames piped as raw RGBA to an ffmpeg child process, the
+// container and codec chosen by the file's extension (.mp4, .mov, .mkv:
+// H.264; .webm: VP9; .gif: a palette made for the whole clip). ffmpeg is an
+// optional dependency: require_video() lets a command fail at once, before
+// simulating, when it is missing or the extension is unknown. The video is
+// written to FILE.partial and renamed into place once ffmpeg has finished, so
+// a failed or interrupted run leaves no video rather than a cut one.
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -13,25 +17,26 @@ namespace recoil::cli {
 // The ffmpeg executable on PATH, or empty.
 std::filesystem::path find_ffmpeg();
 
-// Throws bad_input with the install command when ffmpeg is missing.
-void require_ffmpeg();
+// Throws bad_input naming --video for an extension it cannot write, and with
+// the install command when ffmpeg is missing.
+void require_video(const std::filesystem::path& path);
 
 class VideoEncoder {
  public:
   // Starts ffmpeg writing `path` at `fps` frames per second of width x height.
   VideoEncoder(const std::filesystem::path& path, int width, int height, double fps);
-  ~VideoEncoder();  // closes the pipe (errors ignored; call finish() to see them)
+  ~VideoEncoder();  // without finish(): stops ffmpeg and removes the partial file
   VideoEncoder(const VideoEncoder&) = delete;
   VideoEncoder& operator=(const VideoEncoder&) = delete;
 
   // Throws output_error when ffmpeg has gone away.
   void add(const render::Image& image);
-  // Waits for ffmpeg; throws output_error when it failed.
+  // Waits for ffmpeg and renames the video into place; throws output_error when it failed.
   void finish();
 
  private:
   std::FILE* m_pipe = nullptr;
-  std::filesystem::path m_path;
+  std::filesystem::path m_path, m_partial;
   int m_width, m_height;
 };
 

@@ -1,8 +1,7 @@
 #!/usr/bin/env bash
 # The one list of system packages recoil needs (Debian 12 / Ubuntu 22.04+).
 # Installs only what is missing, through apt-get as root or via sudo.
-#   scripts/install-deps.sh          build + test dependencies
-#   scripts/install-deps.sh --video  also ffmpeg, for `recoil run --video`
+#   scripts/install-deps.sh          build + test dependencies (ffmpeg included, for --video)
 #   scripts/install-deps.sh --farm   also Slurm and munge, for the farm test (make test-farm)
 set -euo pipefail
 
@@ -27,9 +26,9 @@ packages=(
   assimp-testmodels      # a corpus of real, valid and broken mesh files for the import tests
   clang                  # make fuzz: the fuzz targets are built with clang ...
   libclang-rt-14-dev     # ... and linked with its libFuzzer and sanitizer runtimes
+  ffmpeg                 # --video: the frames encoded to MP4, WebM or GIF (and the tests of it)
 )
 case "${1:-}" in
-  --video) packages+=(ffmpeg) ;;
   --farm) packages+=(slurm-wlm munge) ;;
 esac
 

@@ -35,12 +35,13 @@ std::string file_bytes(const fs::path& path) {
   return text.str();
 }
 
-CommandResult run_recoil(const std::string& args) {
+CommandResult run_recoil(const std::string& args, const std::string& environment) {
   static int counter = 0;
   const fs::path dir = scratch_dir("run_recoil_" + std::to_string(counter++));
   const fs::path out = dir / "stdout.txt";
   const fs::path err = dir / "stderr.txt";
-  const std::string command = std::string("'") + RECOIL_BINARY + "' " + args + " </dev/null >'" +
+  const std::string command = (environment.empty() ? "" : "env " + environment + " ") + "'" + RECOIL_BINARY + "' " +
+                              args + " </dev/null >'" +
                               out.string() + "' 2>'" + err.string() + "'";
   const int status = std::system(command.c_str());
   CommandResult result;

@@ -25,7 +25,8 @@ std::string file_bytes(const std::filesystem::path& path);
 std::string shell_quote(const std::filesystem::path& path);
 
 // Runs `recoil ARGS` (ARGS is passed to /bin/sh unchanged, so quote paths)
-// with stdin closed and captures both streams.
-CommandResult run_recoil(const std::string& args);
+// with stdin closed and captures both streams; `environment` ("PATH=/x")
+// is set for recoil alone.
+CommandResult run_recoil(const std::string& args, const std::string& environment = "");
 
 }  // namespace recoil::test

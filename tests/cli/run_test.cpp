@@ -8,7 +8,6 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "cli/video_encoder.h"
 #include "render/png.h"
 #include "tests/test_support.h"
 
@@ -282,14 +281,21 @@ TEST(DropCommand, SeededPileReproducesAndSavesASceneRunAccepts) {
   EXPECT_EQ(without_timings(sr[1]), without_timings(sa[1]));  // the saved scene is the scene that ran
 }
 
-TEST(RunCommand, VideoWithoutFfmpegFailsAtOnceWithTheInstallCommand) {
-  if (!cli::find_ffmpeg().empty()) GTEST_SKIP() << "ffmpeg is installed here";
+TEST(RunCommand, VideoWithoutFfmpegOrOfAnUnknownKindFailsAtOnce) {
   const fs::path dir = scratch_dir("run_video");
-  const CommandResult r = run_recoil("run " + shell_quote(source_path("assets/scenes/bunny-drop.json")) + " --video " +
-                                     shell_quote(dir / "v.mp4") + " -o " + shell_quote(dir / "out"));
+  const std::string scene = shell_quote(source_path("assets/scenes/bunny-drop.json"));
+  const CommandResult r = run_recoil("run " + scene + " --video " + shell_quote(dir / "v.mp4") + " -o " +
+                                         shell_quote(dir / "out"),
+                                     "PATH=/nonexistent");
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("scripts/install-deps.sh --video"), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("apt-get install ffmpeg"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out" / "frame_0001.png"));
+  const CommandResult avi = run_recoil("run " + scene + " --video " + shell_quote(dir / "v.avi") + " -o " +
+                                       shell_quote(dir / "out"));
+  EXPECT_EQ(avi.exit_code, 2);
+  EXPECT_NE(avi.err.find("--video: cannot write 'v.avi'"), std::string::npos) << avi.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "frame_0001.png"));
+  EXPECT_FALSE(fs::exists(dir / "v.avi"));
 }
 
 TEST(InfoCommand, SceneListsBodiesAndTetrahedra) {

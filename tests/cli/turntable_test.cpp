@@ -141,4 +141,20 @@ TEST(TurntableCommand, SettleLaysALeaningBoxOnItsSideAtRest) {
   EXPECT_EQ(scene["simulation"]["settle"], 0.0);
 }
 
+// --video as in `run`: the frames and an MP4 or a GIF beside them, nothing partial left.
+TEST(TurntableCommand, VideoAsMp4AndGif) {
+  const fs::path dir = scratch_dir("turntable_video");
+  for (const char* name : {"turn.mp4", "turn.gif"}) {
+    const CommandResult r = run_recoil("turntable " + bunny() + " --turn-frames 6 --resolution 64x48 --msaa 0 -q --video " +
+                                       shell_quote(dir / name) + " -o " + shell_quote(dir / "frames"));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const std::string video = file_bytes(dir / name);
+    ASSERT_GT(video.size(), 100u) << name;
+    if (std::string(name) == "turn.gif") EXPECT_EQ(video.substr(0, 6), "GIF89a");
+    else EXPECT_EQ(video.substr(4, 4), "ftyp");
+    EXPECT_FALSE(fs::exists(dir / (std::string(name) + ".partial")));
+  }
+  EXPECT_TRUE(fs::exists(dir / "frames" / "frame_0006.png"));
+}
+
 }  // namespace recoil::test
