@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/body/body_kind.h"
 #include "sim/contact/contact_model.h"
 #include "sim/fem/block_sparse.h"
 #include "sim/fem/deformable_body.h"
@@ -85,8 +86,6 @@ struct WorldCounters {
   long nan_steps = 0;
   long energy_blowup_steps = 0;
 };
-
-enum class BodyKind { deformable, rigid, kinematic, fixed };
 
 struct BodySurface {
   std::string name;
