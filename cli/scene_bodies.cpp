@@ -375,9 +375,9 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   } else {
     sim::RigidBodyDesc r;
     r.name = out.name;
-    r.motion = type == SceneBodyType::rigid       ? sim::RigidMotion::dynamic
-               : type == SceneBodyType::kinematic ? sim::RigidMotion::kinematic
-                                                  : sim::RigidMotion::fixed;
+    r.kind = type == SceneBodyType::rigid       ? sim::BodyKind::rigid
+             : type == SceneBodyType::kinematic ? sim::BodyKind::kinematic
+                                                : sim::BodyKind::fixed;
     r.mesh = std::move(geometry.surface);
     r.transform = transform;
     r.friction = friction;

@@ -136,7 +136,7 @@ class World {
   double dt() const { return m_dt; }
   int num_bodies() const { return static_cast<int>(m_bodies.size()); }
   const DeformableBody& body(int i) const { return m_bodies[static_cast<size_t>(i)]; }
-  // Rigid bodies of every motion, in description order.
+  // Rigid, kinematic and fixed bodies, in description order.
   int num_rigid_bodies() const { return static_cast<int>(m_rigid.size()); }
   const RigidBody& rigid_body(int i) const { return m_rigid[static_cast<size_t>(i)]; }
   // Global DoF vectors: 3 per node, layout above.
@@ -185,7 +185,7 @@ class World {
   std::vector<DeformableBody> m_bodies;
   std::vector<double> m_mu_static, m_mu_kinetic;  // per deformable body
   std::vector<char> m_self_contact;               // per deformable body
-  std::vector<RigidBody> m_rigid;                 // every motion
+  std::vector<RigidBody> m_rigid;                 // rigid, kinematic and fixed
   std::vector<int> m_dynamic;                     // indices into m_rigid of the dynamic bodies
   std::vector<PlaneDesc> m_planes;                // normals normalised
   ContactMemory m_memory;                         // warm start for the next step

@@ -126,7 +126,7 @@ int squeezed_u_crossings(bool self_contact, double& penetration, int& unconverge
   for (int side = -1; side <= 1; side += 2) {
     const double x = side < 0 ? -0.011 - 0.01 : 5 * cell + 0.001 + 0.01;  // 1 mm off the arm's outer face
     RigidBodyDesc plate = rigid_box(side < 0 ? "left" : "right", {0.02, 0.04, 0.1}, {x, 5 * cell, cell});
-    plate.motion = RigidMotion::kinematic;
+    plate.kind = BodyKind::kinematic;
     plate.velocity = Eigen::Vector3d(-side * speed, 0.0, 0.0);
     w.rigid_bodies.push_back(plate);
   }

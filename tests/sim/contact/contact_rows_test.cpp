@@ -57,7 +57,7 @@ struct RowScene {
     r.transform.rotation = {10, 20, 30};
     rigid = build_rigid_body(r, device, "rigid_bodies/0", 0.002);
     rigid.linear_node = soft.num_nodes;
-    r.motion = RigidMotion::kinematic;
+    r.kind = BodyKind::kinematic;
     r.transform.position = {0.0, 0.3, 0.1};
     r.velocity = {0.3, -0.2, 0.1};
     r.angular_velocity = {1.0, 2.0, -0.5};
