@@ -17,7 +17,6 @@
 
 namespace recoil::test {
 namespace fs = std::filesystem;
-using cli::SceneBodyType;
 
 static void write_file(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -28,9 +27,9 @@ TEST(SceneFile, DemoSceneParsesIntoWorldRenderAndCamera) {
   const cli::SceneDesc scene = cli::load_scene(source_path("assets/scenes/bunny-drop.json"));
   EXPECT_EQ(scene.name, "bunny-drop");
   ASSERT_EQ(scene.bodies.size(), 3u);
-  EXPECT_EQ(scene.bodies[0].type, SceneBodyType::plane);
-  EXPECT_EQ(scene.bodies[1].type, SceneBodyType::deformable);
-  EXPECT_EQ(scene.bodies[2].type, SceneBodyType::rigid);
+  EXPECT_TRUE(scene.bodies[0].is_plane());
+  EXPECT_EQ(scene.bodies[1].kind, sim::BodyKind::deformable);
+  EXPECT_EQ(scene.bodies[2].kind, sim::BodyKind::rigid);
   ASSERT_EQ(scene.world.planes.size(), 1u);
   ASSERT_EQ(scene.world.bodies.size(), 1u);
   ASSERT_EQ(scene.world.rigid_bodies.size(), 1u);
