@@ -41,7 +41,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
       row["normal"] = {p.normal.x(), p.normal.y(), p.normal.z()};
     } else if (b.kind == sim::BodyKind::deformable) {
       // World bodies are in deformable-description order.
-      const sim::DeformableBody& body = world->body(b.index);
+      const sim::DeformableBody& body = world->deformable_body(b.index);
       const sim::TriMesh& drawn = body.render_surface.empty() ? body.surface : body.render_surface;
       row["surface_vertices"] = drawn.num_vertices();
       row["surface_triangles"] = drawn.num_triangles();

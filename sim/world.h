@@ -134,8 +134,9 @@ class World {
 
   double time() const { return m_time; }
   double dt() const { return m_dt; }
-  int num_bodies() const { return static_cast<int>(m_bodies.size()); }
-  const DeformableBody& body(int i) const { return m_bodies[static_cast<size_t>(i)]; }
+  // Deformable bodies, in description order.
+  int num_deformable_bodies() const { return static_cast<int>(m_bodies.size()); }
+  const DeformableBody& deformable_body(int i) const { return m_bodies[static_cast<size_t>(i)]; }
   // Rigid, kinematic and fixed bodies, in description order.
   int num_rigid_bodies() const { return static_cast<int>(m_rigid.size()); }
   const RigidBody& rigid_body(int i) const { return m_rigid[static_cast<size_t>(i)]; }

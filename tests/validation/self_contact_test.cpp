@@ -27,7 +27,7 @@ TEST(SelfContact, AFineSurfaceFallingFreelyHasNoCandidates) {
   b.self_contact = true;
   w.bodies.push_back(b);
   World world(w);
-  validation::Measured() << "falling sphere: " << world.body(0).surface.num_triangles() << " triangles\n";
+  validation::Measured() << "falling sphere: " << world.deformable_body(0).surface.num_triangles() << " triangles\n";
   int most = 0;
   for (int i = 0; i < 50; ++i) {
     const StepReport r = world.step();
