@@ -40,7 +40,7 @@ nlohmann::json frame_stats_json(int frame, double time, double sim_time, const F
   nlohmann::json bodies = nlohmann::json::array();
   // Scene order: the world lists deformable bodies before rigid ones.
   for (const SceneBody& body : scene.bodies) {
-    if (body.type != SceneBodyType::rigid && body.type != SceneBodyType::deformable) continue;
+    if (body.kind != sim::BodyKind::rigid && body.kind != sim::BodyKind::deformable) continue;
     const auto it = std::find_if(stats.begin(), stats.end(), [&](const sim::BodyStats& s) { return s.name == body.name; });
     if (it != stats.end()) bodies.push_back(body_json(*it));
   }

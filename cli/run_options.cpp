@@ -37,7 +37,7 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
   if (given(o, "--color")) {
     const render::Rgb color = parse_color(o.render.color, "--color");
     for (size_t i = 0; i < scene.bodies.size(); ++i) {
-      if (scene.bodies[i].type == SceneBodyType::plane) continue;
+      if (scene.bodies[i].is_plane()) continue;
       scene.bodies[i].color = color;
       scene.resolved["bodies"][i]["color"] = o.render.color;
     }

@@ -25,22 +25,26 @@ const std::vector<std::string> kAllBodyKeys = {
     "velocity", "angular_velocity", "motion", "pinned", "color", "opacity", "point",   "normal",   "self_contact",
     "up", "collision"};
 
-std::vector<std::string> keys_for(SceneBodyType type) {
+// The keys a body of this kind (none: a plane) may have.
+std::vector<std::string> keys_for(std::optional<sim::BodyKind> kind) {
   std::vector<std::string> keys = {"name", "type"};
   auto add = [&](std::initializer_list<const char*> more) { keys.insert(keys.end(), more.begin(), more.end()); };
-  switch (type) {
-    case SceneBodyType::plane: add({"point", "normal", "friction"}); break;
-    case SceneBodyType::fixed:
+  if (!kind) {
+    add({"point", "normal", "friction"});
+    return keys;
+  }
+  switch (*kind) {
+    case sim::BodyKind::fixed:
       add({"mesh", "up", "primitive", "friction", "transform", "color", "opacity", "collision"});
       break;
-    case SceneBodyType::kinematic:
+    case sim::BodyKind::kinematic:
       add({"mesh", "up", "primitive", "friction", "transform", "color", "opacity", "motion", "collision"});
       break;
-    case SceneBodyType::rigid:
+    case sim::BodyKind::rigid:
       add({"mesh", "up", "primitive", "friction", "transform", "color", "opacity", "density", "velocity",
            "angular_velocity", "collision"});
       break;
-    case SceneBodyType::deformable:
+    case sim::BodyKind::deformable:
       add({"mesh", "up", "primitive", "friction", "transform", "color", "opacity", "tets", "material", "velocity",
            "pinned", "self_contact", "collision"});
       break;
@@ -48,13 +52,15 @@ std::vector<std::string> keys_for(SceneBodyType type) {
   return keys;
 }
 
-SceneBodyType parse_type(const JsonCursor& c) {
+// Every body "type" a scene may give, as kinds; empty: a plane.
+constexpr std::optional<sim::BodyKind> kSceneTypes[] = {std::nullopt, sim::BodyKind::fixed, sim::BodyKind::kinematic,
+                                                        sim::BodyKind::rigid, sim::BodyKind::deformable};
+
+// The kind a scene "type" names; empty for "plane".
+std::optional<sim::BodyKind> parse_type(const JsonCursor& c) {
   const std::string t = c.string();
-  if (t == "plane") return SceneBodyType::plane;
-  if (t == "static") return SceneBodyType::fixed;
-  if (t == "kinematic") return SceneBodyType::kinematic;
-  if (t == "rigid") return SceneBodyType::rigid;
-  if (t == "deformable") return SceneBodyType::deformable;
+  for (const std::optional<sim::BodyKind>& kind : kSceneTypes)
+    if (t == scene_type_name(kind)) return kind;
   const std::string guess = near_miss(t, {"plane", "static", "kinematic", "rigid", "deformable"});
   c.fail("unknown body type \"" + t + "\"" + (guess.empty() ? "" : "; did you mean \"" + guess + "\"?") +
          " (plane, static, kinematic, rigid or deformable)");
@@ -277,22 +283,22 @@ render::Rgb parse_body_color(const JsonCursor& c) {
 
 void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, BodiesSoFar& so_far, SceneDesc& scene) {
   body.expect_object(kAllBodyKeys);
-  const SceneBodyType type = parse_type(body.child("type"));
-  const std::vector<std::string> allowed = keys_for(type);
+  const std::optional<sim::BodyKind> kind = parse_type(body.child("type"));
+  const std::vector<std::string> allowed = keys_for(kind);
   for (const auto& [key, value] : body.value().items())
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      body.child(key).fail("not allowed for a " + std::string(to_string(type)) + " body");
+      body.child(key).fail("not allowed for a " + std::string(scene_type_name(kind)) + " body");
 
   SceneBody out;
-  out.type = type;
+  out.kind = kind;
   out.pointer = body.pointer();
-  out.name = body.string_or("name", std::string(to_string(type)) + std::to_string(index));
+  out.name = body.string_or("name", std::string(scene_type_name(kind)) + std::to_string(index));
   if (const std::string why = unsafe_name_reason(out.name); !why.empty()) body.child("name").fail(why);
   if (!so_far.names.insert(out.name).second) body.child("name").fail("duplicate body name \"" + out.name + "\"");
   const sim::FrictionDesc friction = body.has("friction") ? parse_friction(body.child("friction")) : sim::FrictionDesc{};
   if (!body.has("friction")) body.number_in_or("friction", friction.static_coefficient, kFrictionRange);  // records the default
 
-  if (type == SceneBodyType::plane) {
+  if (out.is_plane()) {
     sim::PlaneDesc plane;
     plane.name = out.name;
     plane.point = body.vec3_in_or("point", Eigen::Vector3d::Zero(), kCoordinateRange);
@@ -323,7 +329,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   const sim::Transform transform = parse_transform(body.child_or_empty("transform"));
   check_placed_extent(body, geometry.surface, transform);
 
-  if (type == SceneBodyType::deformable) {
+  if (kind == sim::BodyKind::deformable) {
     sim::DeformableBodyDesc d;
     d.name = out.name;
     d.transform = transform;
@@ -375,18 +381,16 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   } else {
     sim::RigidBodyDesc r;
     r.name = out.name;
-    r.motion = type == SceneBodyType::rigid       ? sim::RigidMotion::dynamic
-               : type == SceneBodyType::kinematic ? sim::RigidMotion::kinematic
-                                                  : sim::RigidMotion::fixed;
+    r.kind = *kind;
     r.mesh = std::move(geometry.surface);
     r.transform = transform;
     r.friction = friction;
     if (body.has("collision")) r.collision = parse_collision(body.child("collision"));
-    if (type == SceneBodyType::rigid) {
+    if (kind == sim::BodyKind::rigid) {
       r.density = body.number_in_or("density", 1000.0, kDensityRange);
       r.velocity = body.vec3_in_or("velocity", Eigen::Vector3d::Zero(), kSpeedRange);
       r.angular_velocity = body.vec3_in_or("angular_velocity", Eigen::Vector3d::Zero(), kAngularSpeedRange);
-    } else if (type == SceneBodyType::kinematic) {
+    } else if (kind == sim::BodyKind::kinematic) {
       const JsonCursor m = body.child_or_empty("motion");
       m.expect_object({"velocity", "angular_velocity"});
       r.velocity = m.vec3_in_or("velocity", Eigen::Vector3d::Zero(), kSpeedRange);

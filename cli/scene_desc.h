@@ -6,29 +6,33 @@
 #include <Eigen/Core>
 #include <filesystem>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "cli/render_options.h"
 #include "render/render_scene.h"
+#include "sim/body/body_kind.h"
 #include "sim/world_desc.h"
 
 namespace recoil::cli {
 
-// SPEC body types; `fixed` is the file's "static".
-enum class SceneBodyType { plane, fixed, kinematic, rigid, deformable };
-const char* to_string(SceneBodyType type);
+// A body's "type" as the scene file spells it: "plane" for no kind, "static"
+// for BodyKind::fixed, otherwise the kind's own name.
+const char* scene_type_name(std::optional<sim::BodyKind> kind);
 // "cr", "cr-plain" or "pgs", as the scene file and --solver spell them.
 const char* solver_name(sim::SolverMethod method);
 
 struct SceneBody {
   std::string name;           // unique in the scene
-  SceneBodyType type = SceneBodyType::deformable;
-  int index = 0;              // into world.planes, world.rigid_bodies or world.bodies (by type)
+  std::optional<sim::BodyKind> kind;  // empty for a plane
+  int index = 0;              // into world.planes, world.rigid_bodies or world.bodies (by kind)
   render::Rgb color{};        // sRGB
   float opacity = 1.0f;
   std::string pointer;        // "/bodies/3", for messages
   bool open_mesh = false;     // from a surface file that is not watertight (inside/outside by winding number)
+
+  bool is_plane() const { return !kind; }
 };
 
 enum class CameraMode { fixed, orbit, follow };

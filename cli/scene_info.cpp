@@ -34,14 +34,14 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
   const Eigen::Vector3d up = g.norm() > 0.0 ? Eigen::Vector3d(-g.normalized()) : Eigen::Vector3d::UnitY();
   nlohmann::json bodies = nlohmann::json::array();
   for (const SceneBody& b : scene.bodies) {
-    nlohmann::json row = {{"name", b.name}, {"type", to_string(b.type)}};
-    if (b.type == SceneBodyType::plane) {
+    nlohmann::json row = {{"name", b.name}, {"type", scene_type_name(b.kind)}};
+    if (b.is_plane()) {
       const sim::PlaneDesc& p = scene.world.planes[static_cast<size_t>(b.index)];
       row["point"] = {p.point.x(), p.point.y(), p.point.z()};
       row["normal"] = {p.normal.x(), p.normal.y(), p.normal.z()};
-    } else if (b.type == SceneBodyType::deformable) {
+    } else if (b.kind == sim::BodyKind::deformable) {
       // World bodies are in deformable-description order.
-      const sim::DeformableBody& body = world->body(b.index);
+      const sim::DeformableBody& body = world->deformable_body(b.index);
       const sim::TriMesh& drawn = body.render_surface.empty() ? body.surface : body.render_surface;
       row["surface_vertices"] = drawn.num_vertices();
       row["surface_triangles"] = drawn.num_triangles();
@@ -63,7 +63,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
       const sim::Points& drawn = body.render_local.rows() > 0 ? body.render_local : body.local;
       row["collision_below"] = collision_below(drawn * rotation.transpose(), body.local * rotation.transpose(), up);
     }
-    if (b.type != SceneBodyType::plane) row["open_mesh"] = b.open_mesh;
+    if (!b.is_plane()) row["open_mesh"] = b.open_mesh;
     bodies.push_back(row);
   }
   const long steps = std::lround(scene.duration / scene.world.dt);

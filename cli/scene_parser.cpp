@@ -70,7 +70,7 @@ void parse_camera(const JsonCursor& c, SceneDesc& scene) {
     cam.body = body.string();
     const SceneBody* followed = scene.find(cam.body);
     if (!followed) body.fail("no body named \"" + cam.body + "\"");
-    if (followed->type == SceneBodyType::plane) body.fail("cannot follow the plane \"" + cam.body + "\"");
+    if (followed->is_plane()) body.fail("cannot follow the plane \"" + cam.body + "\"");
   }
   if (cam.has_position && cam.has_target && (cam.position - cam.target).norm() < 1e-9)
     c.child("position").fail("must differ from target");
@@ -103,13 +103,13 @@ void parse_render(const JsonCursor& c, SceneDesc& scene) {
 
 }  // namespace
 
-const char* to_string(SceneBodyType type) {
-  switch (type) {
-    case SceneBodyType::plane: return "plane";
-    case SceneBodyType::fixed: return "static";
-    case SceneBodyType::kinematic: return "kinematic";
-    case SceneBodyType::rigid: return "rigid";
-    case SceneBodyType::deformable: return "deformable";
+const char* scene_type_name(std::optional<sim::BodyKind> kind) {
+  if (!kind) return "plane";
+  switch (*kind) {
+    case sim::BodyKind::fixed: return "static";
+    case sim::BodyKind::kinematic: return "kinematic";
+    case sim::BodyKind::rigid: return "rigid";
+    case sim::BodyKind::deformable: return "deformable";
   }
   return "?";
 }

@@ -50,15 +50,12 @@ Error scene_error(const Error& e, const SceneDesc& scene) {
   const std::string file = scene.label();
   struct Prefix {
     const char* text;
-    bool (*matches)(SceneBodyType);
+    bool (*matches)(const SceneBody&);
   };
   const Prefix prefixes[] = {
-      {"bodies/", [](SceneBodyType t) { return t == SceneBodyType::deformable; }},
-      {"rigid_bodies/",
-       [](SceneBodyType t) {
-         return t == SceneBodyType::rigid || t == SceneBodyType::kinematic || t == SceneBodyType::fixed;
-       }},
-      {"planes/", [](SceneBodyType t) { return t == SceneBodyType::plane; }},
+      {"bodies/", [](const SceneBody& b) { return b.kind == sim::BodyKind::deformable; }},
+      {"rigid_bodies/", [](const SceneBody& b) { return !b.is_plane() && b.kind != sim::BodyKind::deformable; }},
+      {"planes/", [](const SceneBody& b) { return b.is_plane(); }},
   };
   for (const Prefix& prefix : prefixes) {
     const size_t length = std::strlen(prefix.text);
@@ -66,7 +63,7 @@ Error scene_error(const Error& e, const SceneDesc& scene) {
     const size_t end = std::min(message.find_first_not_of("0123456789", length), message.size());
     const int index = std::atoi(message.substr(length, end - length).c_str());
     for (const SceneBody& body : scene.bodies)
-      if (prefix.matches(body.type) && body.index == index)
+      if (prefix.matches(body) && body.index == index)
         return Error(e.kind(), file + ": " + body.pointer + message.substr(end));
   }
   if (message.rfind("simulation/", 0) == 0) return Error(e.kind(), file + ": /" + message);

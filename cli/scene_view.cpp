@@ -39,7 +39,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
   m_render.grid = scene.grid;
   bool have_ground = false;
   for (const SceneBody& body : scene.bodies) {
-    if (body.type != SceneBodyType::plane) continue;
+    if (!body.is_plane()) continue;
     const sim::PlaneDesc& plane = scene.world.planes[static_cast<size_t>(body.index)];
     if (plane.normal.normalized().y() > kHorizontal && !have_ground) {
       have_ground = true;

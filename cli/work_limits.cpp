@@ -56,7 +56,7 @@ MemoryEstimate estimate_memory(const SceneDesc& scene, bool render) {
     }
   };
   for (const SceneBody& body : scene.bodies) {
-    if (body.type != SceneBodyType::deformable) continue;
+    if (body.kind != sim::BodyKind::deformable) continue;
     const sim::DeformableBodyDesc& desc = scene.world.bodies[static_cast<size_t>(body.index)];
     const double tets = lattice_tets(desc);
     const std::string field = body.pointer + (desc.tets.empty() ? "/tets/resolution" : "/mesh");

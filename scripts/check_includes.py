@@ -12,7 +12,8 @@ import re
 import sys
 import tempfile
 
-SIM_LAYERS = ["core", "sim/geometry", "sim/collision", "sim/fem", "sim/rigid", "sim/solver", "sim/contact", "sim"]
+SIM_LAYERS = ["core", "sim/geometry", "sim/body", "sim/collision", "sim/fem", "sim/rigid", "sim/solver", "sim/contact",
+              "sim"]
 ALLOWED = {folder: set(SIM_LAYERS[: i + 1]) for i, folder in enumerate(SIM_LAYERS)}
 ALLOWED["render"] = {"core", "render"}
 ALLOWED["cli"] = set(SIM_LAYERS) | {"render", "cli"}

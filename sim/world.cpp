@@ -74,7 +74,7 @@ World::World(const WorldDesc& desc)
   // instead of paying for a simplified one.
   const bool anything_collides =
       !desc.bodies.empty() || std::any_of(desc.rigid_bodies.begin(), desc.rigid_bodies.end(),
-                                          [](const RigidBodyDesc& r) { return r.motion == RigidMotion::dynamic; });
+                                          [](const RigidBodyDesc& r) { return r.kind == BodyKind::rigid; });
   for (size_t i = 0; i < desc.rigid_bodies.size(); ++i) {
     const std::string where = "rigid_bodies/" + std::to_string(i);
     if (anything_collides) {
@@ -84,7 +84,7 @@ World::World(const WorldDesc& desc)
       own_surface.collision.keep_mesh = true;
       m_rigid.push_back(build_rigid_body(own_surface, *m_device, where, desc.contact.margin));
     }
-    if (m_rigid.back().motion == RigidMotion::dynamic) {
+    if (m_rigid.back().kind == BodyKind::rigid) {
       m_rigid.back().linear_node = nodes;
       nodes += 2;
       m_dynamic.push_back(static_cast<int>(i));
@@ -258,9 +258,7 @@ std::vector<BodySurface> World::surfaces() const {
   for (const RigidBody& body : m_rigid) {
     BodySurface s;
     s.name = body.name;
-    s.kind = body.motion == RigidMotion::dynamic     ? BodyKind::rigid
-             : body.motion == RigidMotion::kinematic ? BodyKind::kinematic
-                                                     : BodyKind::fixed;
+    s.kind = body.kind;
     const bool own_render = body.render_triangles.rows() > 0;
     world_points(own_render ? body.render_local : body.local, body.pose, s.positions);
     s.triangles = own_render ? body.render_triangles : body.triangles;

@@ -24,6 +24,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/body/body_kind.h"
 #include "sim/contact/contact_model.h"
 #include "sim/fem/block_sparse.h"
 #include "sim/fem/deformable_body.h"
@@ -86,8 +87,6 @@ struct WorldCounters {
   long energy_blowup_steps = 0;
 };
 
-enum class BodyKind { deformable, rigid, kinematic, fixed };
-
 struct BodySurface {
   std::string name;
   BodyKind kind = BodyKind::deformable;
@@ -135,9 +134,10 @@ class World {
 
   double time() const { return m_time; }
   double dt() const { return m_dt; }
-  int num_bodies() const { return static_cast<int>(m_bodies.size()); }
-  const DeformableBody& body(int i) const { return m_bodies[static_cast<size_t>(i)]; }
-  // Rigid bodies of every motion, in description order.
+  // Deformable bodies, in description order.
+  int num_deformable_bodies() const { return static_cast<int>(m_bodies.size()); }
+  const DeformableBody& deformable_body(int i) const { return m_bodies[static_cast<size_t>(i)]; }
+  // Rigid, kinematic and fixed bodies, in description order.
   int num_rigid_bodies() const { return static_cast<int>(m_rigid.size()); }
   const RigidBody& rigid_body(int i) const { return m_rigid[static_cast<size_t>(i)]; }
   // Global DoF vectors: 3 per node, layout above.
@@ -186,7 +186,7 @@ class World {
   std::vector<DeformableBody> m_bodies;
   std::vector<double> m_mu_static, m_mu_kinetic;  // per deformable body
   std::vector<char> m_self_contact;               // per deformable body
-  std::vector<RigidBody> m_rigid;                 // every motion
+  std::vector<RigidBody> m_rigid;                 // rigid, kinematic and fixed
   std::vector<int> m_dynamic;                     // indices into m_rigid of the dynamic bodies
   std::vector<PlaneDesc> m_planes;                // normals normalised
   ContactMemory m_memory;                         // warm start for the next step

@@ -102,7 +102,7 @@ std::vector<ContactSurface> World::contact_surfaces() const {
   for (size_t i = 0; i < m_bodies.size(); ++i) {
     const DeformableBody& body = m_bodies[i];
     ContactSurface s;
-    s.kind = SurfaceKind::deformable;
+    s.kind = BodyKind::deformable;
     s.mu_static = m_mu_static[i];
     s.mu_kinetic = m_mu_kinetic[i];
     s.self_contact = m_self_contact[i] != 0;
@@ -116,9 +116,7 @@ std::vector<ContactSurface> World::contact_surfaces() const {
   }
   for (const RigidBody& body : m_rigid) {
     ContactSurface s;
-    s.kind = body.motion == RigidMotion::dynamic     ? SurfaceKind::rigid
-             : body.motion == RigidMotion::kinematic ? SurfaceKind::kinematic
-                                                     : SurfaceKind::static_body;
+    s.kind = body.kind;
     s.mu_static = body.friction.static_coefficient;
     s.mu_kinetic = body.friction.kinetic_coefficient;
     s.triangles = body.triangles;
@@ -247,8 +245,8 @@ void World::integrate() {
   const int fem_nodes = m_bodies.empty() ? 0 : m_bodies.back().node_offset + m_bodies.back().num_nodes;
   m_x.head(3 * fem_nodes) += m_dt * m_v.head(3 * fem_nodes);
   for (RigidBody& body : m_rigid) {
-    if (body.motion == RigidMotion::fixed) continue;
-    if (body.motion == RigidMotion::kinematic) {
+    if (body.kind == BodyKind::fixed) continue;
+    if (body.kind == BodyKind::kinematic) {
       body.pose = advance_pose(body.pose, body.velocity, body.angular_velocity, m_dt);
       continue;
     }

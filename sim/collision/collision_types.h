@@ -8,21 +8,14 @@
 #include <optional>
 #include <vector>
 
+#include "sim/body/body_kind.h"
 #include "sim/geometry/tri_mesh.h"
 
 namespace recoil::sim {
 
-enum class SurfaceKind { deformable, rigid, static_body, kinematic };
-
-// True for surfaces whose motion is prescribed (never solved for): pairs of
-// two such surfaces are never tested against each other.
-inline bool is_prescribed(SurfaceKind kind) {
-  return kind == SurfaceKind::static_body || kind == SurfaceKind::kinematic;
-}
-
 struct CollisionSurface {
   int body = -1;           // caller's body id, copied into candidates
-  SurfaceKind kind = SurfaceKind::deformable;
+  BodyKind kind = BodyKind::deformable;
   Points x0;               // #V by 3, positions at the start of the step (m)
   Points x1;               // #V by 3, predicted positions at the end of the step (m)
   Triangles triangles;     // #F by 3, indices into x0/x1, counter-clockwise from outside

@@ -173,7 +173,7 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   const int nv = static_cast<int>(surface.x0.rows());
   RECOIL_CHECK(surface.x1.rows() == nv, "surface " << index << ": x0 has " << nv << " rows, x1 " << surface.x1.rows());
   RECOIL_CHECK(surface.x0.allFinite() && surface.x1.allFinite(), "surface " << index << " has non-finite positions");
-  RECOIL_CHECK(!(surface.self_contact && surface.kind == SurfaceKind::deformable) ||
+  RECOIL_CHECK(!(surface.self_contact && surface.kind == BodyKind::deformable) ||
                    (surface.rest != nullptr && surface.rest->rows() == nv),
                "surface " << index << ": self-contact needs the rest shape (#V rows)");
   out.vertex_motion.resize(static_cast<size_t>(nv));
@@ -215,7 +215,7 @@ bool surfaces_interact(const PreparedSurface& a, const PreparedSurface& b) {
   return !(is_prescribed(a.surface->kind) && is_prescribed(b.surface->kind));
 }
 bool self_interacts(const PreparedSurface& a) {
-  return a.surface->kind == SurfaceKind::deformable && a.surface->self_contact;
+  return a.surface->kind == BodyKind::deformable && a.surface->self_contact;
 }
 
 namespace {

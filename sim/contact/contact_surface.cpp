@@ -23,12 +23,12 @@ void embedded(const ContactSurface& s, const Eigen::VectorXd& nodes_global, Poin
 }  // namespace
 
 int ContactSurface::num_vertices() const {
-  if (kind == SurfaceKind::deformable) return static_cast<int>(embedding->tet.size());
+  if (kind == BodyKind::deformable) return static_cast<int>(embedding->tet.size());
   return static_cast<int>(local->rows());
 }
 
 void start_positions(const ContactSurface& s, const DofState& state, Points& out) {
-  if (s.kind == SurfaceKind::deformable) {
+  if (s.kind == BodyKind::deformable) {
     embedded(s, *state.x, out);
   } else {
     world_points(*s.local, s.pose, out);
@@ -37,22 +37,22 @@ void start_positions(const ContactSurface& s, const DofState& state, Points& out
 
 RigidPose predicted_pose(const ContactSurface& s, const DofState& state, const Eigen::VectorXd& dv) {
   switch (s.kind) {
-    case SurfaceKind::rigid: {
+    case BodyKind::rigid: {
       const int n = s.linear_node;
       const Eigen::Vector3d v = state.v->segment<3>(3 * n) + dv.segment<3>(3 * n);
       const Eigen::Vector3d w = state.v->segment<3>(3 * n + 3) + dv.segment<3>(3 * n + 3);
       return advance_pose(s.pose, v, w, state.h);
     }
-    case SurfaceKind::kinematic: return advance_pose(s.pose, s.velocity, s.angular_velocity, state.h);
-    case SurfaceKind::static_body: return s.pose;
-    case SurfaceKind::deformable: break;
+    case BodyKind::kinematic: return advance_pose(s.pose, s.velocity, s.angular_velocity, state.h);
+    case BodyKind::fixed: return s.pose;
+    case BodyKind::deformable: break;
   }
   RECOIL_CHECK(false, "predicted_pose of a deformable surface");
   return s.pose;
 }
 
 void predicted_positions(const ContactSurface& s, const DofState& state, const Eigen::VectorXd& dv, Points& out) {
-  if (s.kind == SurfaceKind::deformable) {
+  if (s.kind == BodyKind::deformable) {
     const Eigen::VectorXd nodes = *state.x + state.h * (*state.v + dv);
     embedded(s, nodes, out);
   } else {
@@ -62,7 +62,7 @@ void predicted_positions(const ContactSurface& s, const DofState& state, const E
 
 void point_jacobian(const ContactSurface& s, const DofState& state, const Eigen::VectorXd& dv, const Points& predicted,
                     const SurfacePoint& point, double sign, PointJacobian& out) {
-  if (s.kind == SurfaceKind::deformable) {
+  if (s.kind == BodyKind::deformable) {
     const Embedding& e = *s.embedding;
     for (int j = 0; j < point.count; ++j) {
       const int vertex = point.vertex[static_cast<size_t>(j)];
@@ -75,7 +75,7 @@ void point_jacobian(const ContactSurface& s, const DofState& state, const Eigen:
     }
     return;
   }
-  if (s.kind != SurfaceKind::rigid) return;  // prescribed motion: no DoFs
+  if (s.kind != BodyKind::rigid) return;  // prescribed motion: no DoFs
   // p* = c + h v+ + exp(h w+) R r_local: d p*/d(h v) = I and
   // d p*/d(h w) = -[r*]x J_l(h w+), r* = p* - c* (held weights).
   const RigidPose pose = predicted_pose(s, state, dv);

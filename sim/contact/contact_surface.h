@@ -15,7 +15,7 @@
 namespace recoil::sim {
 
 struct ContactSurface {
-  SurfaceKind kind = SurfaceKind::deformable;
+  BodyKind kind = BodyKind::deformable;
   double mu_static = 0.5, mu_kinetic = 0.5;
   bool self_contact = false;
   const Points* rest = nullptr;  // #V by 3, rest shape for the self-contact rule (collision_types.h)

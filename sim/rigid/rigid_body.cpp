@@ -17,11 +17,13 @@ Eigen::Matrix3d RigidBody::world_inertia() const {
 }
 
 double RigidBody::kinetic_energy() const {
-  if (motion != RigidMotion::dynamic) return 0.0;
+  if (kind != BodyKind::rigid) return 0.0;
   return 0.5 * mass * velocity.squaredNorm() + 0.5 * angular_velocity.dot(world_inertia() * angular_velocity);
 }
 
 RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin) {
+  if (desc.kind == BodyKind::deformable)
+    throw bad_input(where + ": a rigid body description is rigid, kinematic or fixed, not deformable");
   if (desc.mesh.empty()) throw bad_input(where + "/mesh: a rigid body needs a surface");
   if (!desc.mesh.vertices.allFinite()) throw bad_input(where + "/mesh: vertices must be finite");
   if (!desc.transform.position.allFinite() || !desc.transform.rotation.allFinite() || !desc.velocity.allFinite() ||
@@ -36,14 +38,14 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
 
   RigidBody body;
   body.name = desc.name;
-  body.motion = desc.motion;
+  body.kind = desc.kind;
   body.friction = desc.friction;
   TriMesh mesh = desc.mesh;
   transform_in_place(mesh, desc.transform.rotation_matrix(), desc.transform.scale, desc.transform.position);
   body.triangles = mesh.triangles;
 
   Eigen::Vector3d reference = desc.transform.position;
-  if (desc.motion == RigidMotion::dynamic) {
+  if (desc.kind == BodyKind::rigid) {
     if (!(desc.density > 0.0) || !std::isfinite(desc.density)) throw bad_input(where + "/density: must be > 0");
     const MassProperties props = mass_properties(mesh, desc.density);
     if (!(props.volume > 0.0))
@@ -55,10 +57,10 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
     // Initial velocity is given for the reference point of the description
     // (transform.position); the centre of mass moves with v + w x (c - p).
     body.velocity = desc.velocity + desc.angular_velocity.cross(props.center - desc.transform.position);
-  } else if (desc.motion == RigidMotion::kinematic) {
+  } else if (desc.kind == BodyKind::kinematic) {
     body.velocity = desc.velocity;
   }
-  if (desc.motion != RigidMotion::fixed) body.angular_velocity = desc.angular_velocity;
+  if (desc.kind != BodyKind::fixed) body.angular_velocity = desc.angular_velocity;
   body.pose.center = reference;
   // The cell a deformable body of this shape would have at the default resolution.
   const double cell = bounding_box(mesh).extent().maxCoeff() / kDefaultResolution;

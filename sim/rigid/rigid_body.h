@@ -29,7 +29,7 @@ struct RigidPose {
 
 struct RigidBody {
   std::string name;
-  RigidMotion motion = RigidMotion::dynamic;
+  BodyKind kind = BodyKind::rigid;  // rigid (dynamic), kinematic or fixed
   Points local;           // #V by 3, collision surface vertices relative to the reference point, body frame
   Triangles triangles;    // #F by 3
   // The imported mesh, body frame, when the collision surface is a simplified
@@ -52,9 +52,10 @@ struct RigidBody {
 };
 
 // Throws bad_input naming `where` (e.g. "rigid_bodies/2") for an invalid
-// description: empty or non-finite mesh, a dynamic body with non-positive
-// density or enclosed volume. Mass properties come from the mesh; `margin`
-// (m, the world's contact margin) sets the default collision surface.
+// description: a deformable kind, empty or non-finite mesh, a dynamic body
+// with non-positive density or enclosed volume. Mass properties come from the
+// mesh; `margin` (m, the world's contact margin) sets the default collision
+// surface.
 RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin);
 
 // The pose after moving for h seconds at constant velocity and angular

@@ -4,6 +4,7 @@
 #include <Eigen/Core>
 #include <string>
 
+#include "sim/body/body_kind.h"
 #include "sim/collision/collision_proxy.h"
 #include "sim/geometry/transform.h"
 #include "sim/geometry/tri_mesh.h"
@@ -17,15 +18,13 @@ struct FrictionDesc {
   double kinetic_coefficient = 0.5;
 };
 
-// Bodies that move as a whole. `dynamic` bodies have 6 DoF (mass and inertia
-// from their closed surface and density); `kinematic` ones follow a scripted
-// constant velocity and angular velocity about transform.position; `fixed`
-// ones (scene type "static") never move.
-enum class RigidMotion { dynamic, kinematic, fixed };
-
+// A body that moves as a whole. A `rigid` one is dynamic: 6 DoF, mass and
+// inertia from its closed surface and density; a `kinematic` one follows a
+// scripted constant velocity and angular velocity about transform.position; a
+// `fixed` one (scene type "static") never moves.
 struct RigidBodyDesc {
   std::string name = "rigid";
-  RigidMotion motion = RigidMotion::dynamic;
+  BodyKind kind = BodyKind::rigid;  // rigid, kinematic or fixed; never deformable
   TriMesh mesh;                 // surface in local coordinates (closed for dynamic bodies)
   Transform transform;          // local -> world at time 0
   double density = 1000.0;      // kg/m^3, dynamic only

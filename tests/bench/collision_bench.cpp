@@ -19,9 +19,9 @@ std::vector<CollisionSurface> touching_spheres(int subdivisions_left, int subdiv
   sim::TriMesh right = sim::testing::icosphere(subdivisions_right);
   right.vertices.col(0).array() += 2.0 - 0.001;
   std::vector<CollisionSurface> s;
-  s.push_back(sim::testing::moving_surface(left, 0, sim::SurfaceKind::deformable, {0.00025, 0, 0}));
+  s.push_back(sim::testing::moving_surface(left, 0, sim::BodyKind::deformable, {0.00025, 0, 0}));
   s.back().self_contact = self;
-  s.push_back(sim::testing::moving_surface(right, 1, sim::SurfaceKind::rigid, {-0.00025, 0, 0}));
+  s.push_back(sim::testing::moving_surface(right, 1, sim::BodyKind::rigid, {-0.00025, 0, 0}));
   return s;
 }
 

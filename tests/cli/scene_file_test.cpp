@@ -17,7 +17,6 @@
 
 namespace recoil::test {
 namespace fs = std::filesystem;
-using cli::SceneBodyType;
 
 static void write_file(const fs::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
@@ -28,9 +27,9 @@ TEST(SceneFile, DemoSceneParsesIntoWorldRenderAndCamera) {
   const cli::SceneDesc scene = cli::load_scene(source_path("assets/scenes/bunny-drop.json"));
   EXPECT_EQ(scene.name, "bunny-drop");
   ASSERT_EQ(scene.bodies.size(), 3u);
-  EXPECT_EQ(scene.bodies[0].type, SceneBodyType::plane);
-  EXPECT_EQ(scene.bodies[1].type, SceneBodyType::deformable);
-  EXPECT_EQ(scene.bodies[2].type, SceneBodyType::rigid);
+  EXPECT_TRUE(scene.bodies[0].is_plane());
+  EXPECT_EQ(scene.bodies[1].kind, sim::BodyKind::deformable);
+  EXPECT_EQ(scene.bodies[2].kind, sim::BodyKind::rigid);
   ASSERT_EQ(scene.world.planes.size(), 1u);
   ASSERT_EQ(scene.world.bodies.size(), 1u);
   ASSERT_EQ(scene.world.rigid_bodies.size(), 1u);
@@ -44,7 +43,7 @@ TEST(SceneFile, DemoSceneParsesIntoWorldRenderAndCamera) {
   EXPECT_EQ(bunny.transform.rotation, Eigen::Vector3d(0, 30, 0));
   EXPECT_NEAR(scene.bodies[1].color[0], 0xd9 / 255.0, 1e-6);
   EXPECT_DOUBLE_EQ(scene.world.rigid_bodies[0].density, 500.0);
-  EXPECT_EQ(scene.world.rigid_bodies[0].motion, sim::RigidMotion::dynamic);
+  EXPECT_EQ(scene.world.rigid_bodies[0].kind, sim::BodyKind::rigid);
   EXPECT_EQ(scene.render.resolution, "1280x720");
   EXPECT_EQ(scene.frame_count(), 91);  // 3 s at 30 fps, both ends included
   EXPECT_TRUE(scene.camera.has_position);
@@ -62,7 +61,7 @@ TEST(SceneFile, ResolvedSceneParsesToTheSameDescription) {
   const cli::SceneDesc b = cli::parse_scene(a.resolved, "resolved.json", "/");
   EXPECT_EQ(a.resolved, b.resolved);
   ASSERT_EQ(b.world.rigid_bodies.size(), 2u);
-  EXPECT_EQ(b.world.rigid_bodies[0].motion, sim::RigidMotion::kinematic);
+  EXPECT_EQ(b.world.rigid_bodies[0].kind, sim::BodyKind::kinematic);
   EXPECT_EQ(b.world.rigid_bodies[0].angular_velocity, Eigen::Vector3d(0, 0, -4));
   EXPECT_FLOAT_EQ(b.bodies[1].opacity, 0.5f);
   EXPECT_EQ(b.world.bodies[0].material.model, sim::MaterialModel::neo_hookean);
@@ -79,7 +78,7 @@ TEST(SceneFile, ScalarAndVectorScaleFrictionFormsAndPrimitives) {
   const cli::SceneDesc scene = cli::load_scene(dir / "s.json");
   EXPECT_EQ(scene.name, "s");  // the file stem when the scene has no name
   ASSERT_EQ(scene.world.rigid_bodies.size(), 3u);
-  EXPECT_EQ(scene.world.rigid_bodies[0].motion, sim::RigidMotion::fixed);
+  EXPECT_EQ(scene.world.rigid_bodies[0].kind, sim::BodyKind::fixed);
   EXPECT_EQ(scene.world.rigid_bodies[0].transform.scale, Eigen::Vector3d(1, 2, 3));
   EXPECT_DOUBLE_EQ(scene.world.rigid_bodies[0].friction.kinetic_coefficient, 0.4);
   EXPECT_DOUBLE_EQ(scene.world.rigid_bodies[1].friction.static_coefficient, 0.7);

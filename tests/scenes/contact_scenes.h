@@ -218,7 +218,7 @@ inline WorldDesc rollers(double omega = 6.0, int resolution = 4, double dt = 0.0
   for (int side = -1; side <= 1; side += 2) {
     RigidBodyDesc c;
     c.name = side < 0 ? "roller_left" : "roller_right";
-    c.motion = RigidMotion::kinematic;
+    c.kind = BodyKind::kinematic;
     c.mesh = make_cylinder(radius, 0.2, 32);
     c.transform.rotation = Eigen::Vector3d(90.0, 0.0, 0.0);
     c.transform.position = Eigen::Vector3d(side * (radius + 0.5 * gap), 0.0, 0.0);

@@ -48,12 +48,12 @@ TEST(WorldRigid, FreeFlightKeepsMomentaAndFollowsGravity) {
 TEST(WorldRigid, KinematicAndFixedBodiesFollowTheirScript) {
   WorldDesc w = base_world(0.01);
   RigidBodyDesc k = rigid_box("roller", {0.1, 0.1, 0.1}, {0.0, 0.0, 0.0});
-  k.motion = RigidMotion::kinematic;
+  k.kind = BodyKind::kinematic;
   k.velocity = {1.0, 0.0, 0.0};
   k.angular_velocity = {0.0, kPi, 0.0};
   w.rigid_bodies.push_back(k);
   RigidBodyDesc f = rigid_box("wall", {0.1, 0.1, 0.1}, {0.0, -1.0, 0.0});
-  f.motion = RigidMotion::fixed;
+  f.kind = BodyKind::fixed;
   w.rigid_bodies.push_back(f);
   w.gravity.setZero();  // the jelly floats far from the others
   w.bodies.push_back(soft_box("jelly", {0.1, 0.1, 0.1}, 2, jelly(), {0.0, 3.0, 0.0}));
@@ -88,6 +88,16 @@ TEST(WorldRigid, RejectsBadInput) {
     FAIL() << "negative friction accepted";
   } catch (const Error& e) {
     EXPECT_NE(std::string(e.what()).find("rigid_bodies/0/friction"), std::string::npos) << e.what();
+  }
+  // A rigid body description is rigid, kinematic or fixed.
+  w = base_world(0.01);
+  w.rigid_bodies.push_back(rigid_box("b", {0.1, 0.1, 0.1}, {0, 0, 0}, friction(0.5, 0.5)));
+  w.rigid_bodies.back().kind = BodyKind::deformable;
+  try {
+    World world(w);
+    FAIL() << "a deformable rigid body description accepted";
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("rigid_bodies/0: "), std::string::npos) << e.what();
   }
 }
 

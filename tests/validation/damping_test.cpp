@@ -96,7 +96,7 @@ TEST(DampingValidation, LowestModeDecaysAtTheStatedRatio) {
   w.gravity.setZero();
   w.bodies.push_back(damped_cube(zeta, Eigen::Vector3d::Zero()));
   World world(w);
-  const DeformableBody& body = world.body(0);
+  const DeformableBody& body = world.deformable_body(0);
   const VibrationMode mode =
       lowest_vibration_mode({&body.rest, &body.elements, body.material.model, body.lame, &body.mass, &body.pinned});
   ASSERT_GT(mode.omega, 0.0);
@@ -155,7 +155,7 @@ TEST(DampingValidation, LowestModeMatchesADenseEigenSolve) {
   w.bodies.push_back(soft_box("box", Eigen::Vector3d(0.3, 0.2, 0.1), 2, m, Eigen::Vector3d::Zero()));
   World world(w);
   world.step();  // assembles A at the rest state (no forces act)
-  const DeformableBody& body = world.body(0);
+  const DeformableBody& body = world.deformable_body(0);
   const Eigen::MatrixXd A = Eigen::MatrixXd(world.system_matrix().to_eigen());
   Eigen::VectorXd m3(A.rows());
   for (int i = 0; i < body.num_nodes; ++i) m3.segment<3>(3 * i).setConstant(body.mass[i]);

@@ -27,7 +27,7 @@ TEST(SelfContact, AFineSurfaceFallingFreelyHasNoCandidates) {
   b.self_contact = true;
   w.bodies.push_back(b);
   World world(w);
-  validation::Measured() << "falling sphere: " << world.body(0).surface.num_triangles() << " triangles\n";
+  validation::Measured() << "falling sphere: " << world.deformable_body(0).surface.num_triangles() << " triangles\n";
   int most = 0;
   for (int i = 0; i < 50; ++i) {
     const StepReport r = world.step();
@@ -126,7 +126,7 @@ int squeezed_u_crossings(bool self_contact, double& penetration, int& unconverge
   for (int side = -1; side <= 1; side += 2) {
     const double x = side < 0 ? -0.011 - 0.01 : 5 * cell + 0.001 + 0.01;  // 1 mm off the arm's outer face
     RigidBodyDesc plate = rigid_box(side < 0 ? "left" : "right", {0.02, 0.04, 0.1}, {x, 5 * cell, cell});
-    plate.motion = RigidMotion::kinematic;
+    plate.kind = BodyKind::kinematic;
     plate.velocity = Eigen::Vector3d(-side * speed, 0.0, 0.0);
     w.rigid_bodies.push_back(plate);
   }

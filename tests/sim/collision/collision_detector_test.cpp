@@ -35,7 +35,7 @@ RandomScene random_scene(unsigned seed) {
   a.vertices *= 0.1;
   testing::perturb(a, 0.004, rng);
   a.vertices = a.vertices * testing::random_rotation(rng).transpose();
-  CollisionSurface sa = moving_surface(a, 10, SurfaceKind::deformable, Eigen::Vector3d(u(rng), u(rng), u(rng)) * 0.003);
+  CollisionSurface sa = moving_surface(a, 10, BodyKind::deformable, Eigen::Vector3d(u(rng), u(rng), u(rng)) * 0.003);
   // A deformation on top of the motion, so x1 is not a rigid image of x0.
   for (Eigen::Index i = 0; i < sa.x1.rows(); ++i)
     for (int k = 0; k < 3; ++k) sa.x1(i, k) += 0.002 * u(rng);
@@ -56,17 +56,17 @@ RandomScene random_scene(unsigned seed) {
   const Eigen::Vector3d dir = Eigen::Vector3d(u(rng), u(rng), 0.5 + 0.5 * std::abs(u(rng))).normalized();
   const Eigen::Vector3d centre = dir * (0.1 + 0.07 + 0.004 * u(rng));
   b.vertices.rowwise() += centre.transpose();
-  scene.surfaces.push_back(moving_surface(b, 20, SurfaceKind::rigid, -dir * 0.004,
+  scene.surfaces.push_back(moving_surface(b, 20, BodyKind::rigid, -dir * 0.004,
                                           Eigen::AngleAxisd(0.05 * u(rng), Eigen::Vector3d::UnitY()).toRotationMatrix()));
 
   TriMesh slab = testing::box({0.3, 0.3, 0.02});
   slab.vertices.col(2).array() -= 0.1 + 0.02 + 0.002 * std::abs(u(rng));
-  scene.surfaces.push_back(moving_surface(slab, 30, SurfaceKind::static_body, Eigen::Vector3d::Zero()));
+  scene.surfaces.push_back(moving_surface(slab, 30, BodyKind::fixed, Eigen::Vector3d::Zero()));
 
   TriMesh lid = testing::box({0.05, 0.05, 0.02});
   lid.vertices.col(0).array() += 0.2;
   lid.vertices.col(2).array() -= 0.1 - 0.0005;  // resting on the slab
-  scene.surfaces.push_back(moving_surface(lid, 40, SurfaceKind::kinematic, Eigen::Vector3d(0.001, 0, 0)));
+  scene.surfaces.push_back(moving_surface(lid, 40, BodyKind::kinematic, Eigen::Vector3d(0.001, 0, 0)));
 
   scene.planes.push_back({50, Eigen::Vector3d(0, 0, -0.099), Eigen::Vector3d(0, 0, 2.0)});
   return scene;
@@ -143,15 +143,15 @@ TEST(CollisionDetector, FarApartSurfacesAreCulledUnlessTheyMoveThrough) {
   right.vertices.col(0).array() += 1.0;  // 0.8 m of free space between them
   CollisionDetector detector({0.002, 1});
   const std::vector<CollisionSurface> resting = {
-      moving_surface(left, 1, SurfaceKind::rigid, Eigen::Vector3d::Zero()),
-      moving_surface(right, 2, SurfaceKind::deformable, Eigen::Vector3d::Zero())};
+      moving_surface(left, 1, BodyKind::rigid, Eigen::Vector3d::Zero()),
+      moving_surface(right, 2, BodyKind::deformable, Eigen::Vector3d::Zero())};
   EXPECT_TRUE(detector.detect(resting, {}).empty());
   EXPECT_EQ(detector.last_stats().vertex_triangle_pairs, 0);
   EXPECT_EQ(detector.last_stats().edge_edge_pairs, 0);
   // The left sphere crosses the whole gap and the right sphere in one step.
   const std::vector<CollisionSurface> flying = {
-      moving_surface(left, 1, SurfaceKind::rigid, Eigen::Vector3d(1.5, 0.01, 0)),
-      moving_surface(right, 2, SurfaceKind::deformable, Eigen::Vector3d::Zero())};
+      moving_surface(left, 1, BodyKind::rigid, Eigen::Vector3d(1.5, 0.01, 0)),
+      moving_surface(right, 2, BodyKind::deformable, Eigen::Vector3d::Zero())};
   const auto found = detector.detect(flying, {});
   testing::expect_same_candidates(found, brute_force_candidates(flying, {}, {0.002, 1}), 1e-9);
   const auto with_toi = std::count_if(found.begin(), found.end(), [](const auto& c) { return c.toi.has_value(); });
@@ -171,14 +171,14 @@ TEST(CollisionDetector, BodiesFallingTogetherGiveNoCandidatesUntilTheyClose) {
   upper.vertices.col(2).array() += 0.11;
   const Eigen::Vector3d fall(0.0, 0.0, -0.03);
   CollisionDetector detector({0.002, 1});
-  const std::vector<CollisionSurface> together = {moving_surface(lower, 1, SurfaceKind::deformable, fall),
-                                                  moving_surface(upper, 2, SurfaceKind::deformable, fall)};
+  const std::vector<CollisionSurface> together = {moving_surface(lower, 1, BodyKind::deformable, fall),
+                                                  moving_surface(upper, 2, BodyKind::deformable, fall)};
   const auto apart = detector.detect(together, {});
   testing::expect_same_candidates(apart, brute_force_candidates(together, {}, {0.002, 1}), 1e-9);
   EXPECT_TRUE(apart.empty()) << apart.size() << " candidates";
   const std::vector<CollisionSurface> closing = {
-      moving_surface(lower, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero()),
-      moving_surface(upper, 2, SurfaceKind::deformable, fall)};
+      moving_surface(lower, 1, BodyKind::deformable, Eigen::Vector3d::Zero()),
+      moving_surface(upper, 2, BodyKind::deformable, fall)};
   const auto found = detector.detect(closing, {});
   testing::expect_same_candidates(found, brute_force_candidates(closing, {}, {0.002, 1}), 1e-9);
   EXPECT_GT(found.size(), 0u);
@@ -197,7 +197,7 @@ TEST(CollisionDetector, SelfContactSkipsNeighbours) {
   beside.vertices.col(0).array() += 0.2;
   append(sheet, upper);
   append(unfolded, beside);
-  CollisionSurface s = moving_surface(sheet, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero());
+  CollisionSurface s = moving_surface(sheet, 1, BodyKind::deformable, Eigen::Vector3d::Zero());
   s.self_contact = true;
   s.rest = &unfolded.vertices;
   CollisionDetector detector({0.002, 1});

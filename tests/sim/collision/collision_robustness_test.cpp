@@ -32,7 +32,7 @@ std::vector<ContactCandidate> detect_checked(const std::vector<CollisionSurface>
 
 // A 2 cm cube falls 8 cm in one step through a 2 mm static plate (centred at
 // z = 0); its bottom starts 2 cm above the plate's top face.
-class ThinPlate : public ::testing::TestWithParam<SurfaceKind> {};
+class ThinPlate : public ::testing::TestWithParam<BodyKind> {};
 
 TEST_P(ThinPlate, FastSmallObjectIsCaught) {
   const double half = 0.01, plate_half = 0.001, fall = 0.08;
@@ -44,7 +44,7 @@ TEST_P(ThinPlate, FastSmallObjectIsCaught) {
   cube.vertices = ((cube.vertices.rowwise() - centre) * tilt.transpose()).rowwise() + centre;
   const CollisionSurface falling = moving_surface(cube, 1, GetParam(), Eigen::Vector3d(0.003, 0, -fall));
   const CollisionSurface plate =
-      moving_surface(testing::box({0.2, 0.2, plate_half}), 2, SurfaceKind::static_body, Eigen::Vector3d::Zero());
+      moving_surface(testing::box({0.2, 0.2, plate_half}), 2, BodyKind::fixed, Eigen::Vector3d::Zero());
   const auto found = detect_checked({falling, plate}, {}, 0.002);
   EmbreeDevice device;
   const TriangleScene plate_scene(device, plate.x0, plate.triangles, /*dynamic=*/false);
@@ -86,7 +86,7 @@ TEST_P(ThinPlate, FastSmallObjectIsCaught) {
   std::cout << found.size() << " candidates, " << crossing << " crossing vertices caught\n";
 }
 
-INSTANTIATE_TEST_SUITE_P(Kinds, ThinPlate, ::testing::Values(SurfaceKind::rigid, SurfaceKind::deformable));
+INSTANTIATE_TEST_SUITE_P(Kinds, ThinPlate, ::testing::Values(BodyKind::rigid, BodyKind::deformable));
 
 TEST(CollisionRobustness, ThinPlateAgainstFastSheetEdges) {
   // A single-sided open plate (a grid 0.2 m wide) and a stick-like box
@@ -98,9 +98,9 @@ TEST(CollisionRobustness, ThinPlateAgainstFastSheetEdges) {
   TriMesh stick = testing::box({0.05, 0.004, 0.004});
   stick.vertices = stick.vertices * Eigen::AngleAxisd(0.5, Eigen::Vector3d::UnitZ()).toRotationMatrix().transpose();
   stick.vertices.rowwise() += Eigen::RowVector3d(0.1, 0.007, 0.03);
-  const CollisionSurface falling = moving_surface(stick, 1, SurfaceKind::rigid, Eigen::Vector3d(0, 0, -0.06));
+  const CollisionSurface falling = moving_surface(stick, 1, BodyKind::rigid, Eigen::Vector3d(0, 0, -0.06));
   const CollisionSurface plate =
-      moving_surface(testing::grid(4, 0.05), 2, SurfaceKind::static_body, Eigen::Vector3d::Zero());
+      moving_surface(testing::grid(4, 0.05), 2, BodyKind::fixed, Eigen::Vector3d::Zero());
   const auto found = detect_checked({falling, plate}, {}, 0.002);
   int edge_impacts = 0, inner_edges = 0;
   for (const ContactCandidate& c : found)
@@ -129,8 +129,8 @@ TEST(CollisionRobustness, ParallelEdgesAndCoplanarFaces) {
     TriMesh upper = lower;
     upper.vertices.col(2).array() += 0.1 + separation;
     const Eigen::Vector3d press(0.0, 0.0, separation == 0.0 ? -1e-4 : 0.0);
-    const auto found = detect_checked({moving_surface(lower, 1, SurfaceKind::rigid, Eigen::Vector3d::Zero()),
-                                       moving_surface(upper, 2, SurfaceKind::deformable, press)},
+    const auto found = detect_checked({moving_surface(lower, 1, BodyKind::rigid, Eigen::Vector3d::Zero()),
+                                       moving_surface(upper, 2, BodyKind::deformable, press)},
                                       {}, 0.002);
     // The 4 facing corners of each box meet the 4 of the other: each pair is
     // found from both sides but is one constraint, so one candidate per pair.
@@ -161,8 +161,8 @@ TEST(CollisionRobustness, NearlyCoincidentGridsGiveOneContactPerVertexPair) {
     upper.vertices(i, 0) += 5e-6 * static_cast<double>(i % 3 - 1);
     upper.vertices(i, 1) += 5e-6 * static_cast<double>(i % 2) + 0.1002;
   }
-  const auto found = detect_checked({moving_surface(lower, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero()),
-                                     moving_surface(upper, 2, SurfaceKind::deformable, Eigen::Vector3d::Zero())},
+  const auto found = detect_checked({moving_surface(lower, 1, BodyKind::deformable, Eigen::Vector3d::Zero()),
+                                     moving_surface(upper, 2, BodyKind::deformable, Eigen::Vector3d::Zero())},
                                     {}, 0.002);
   int vertex_candidates = 0, edge_candidates = 0;
   double worst_tilt = 0.0;
@@ -189,8 +189,8 @@ TEST(CollisionRobustness, VertexExactlyOnAnEdge) {
   TriMesh point = testing::box({0.1, 0.1, 0.1});
   point.vertices.rowwise() += Eigen::RowVector3d(0.6, 0.6, 0.1);  // corner 0 at (0.5, 0.5, 0)
   const auto found =
-      detect_checked({moving_surface(point, 1, SurfaceKind::rigid, Eigen::Vector3d(0, 0, -0.001)),
-                      moving_surface(square, 2, SurfaceKind::static_body, Eigen::Vector3d::Zero())},
+      detect_checked({moving_surface(point, 1, BodyKind::rigid, Eigen::Vector3d(0, 0, -0.001)),
+                      moving_surface(square, 2, BodyKind::fixed, Eigen::Vector3d::Zero())},
                      {}, 0.002);
   int on_edge = 0;
   for (const ContactCandidate& c : found)
@@ -217,8 +217,8 @@ TEST(CollisionRobustness, RestingVertexKeepsTheOutwardNormalWhicheverWayItMoves)
   probe.vertices.rowwise() += Eigen::RowVector3d(0.8, 0.3, 0.1);  // corner 0 at (0.7, 0.2, 0)
   for (double dz : {0.001, 0.0, -0.001}) {
     const auto found =
-        detect_checked({moving_surface(probe, 1, SurfaceKind::rigid, Eigen::Vector3d(0.0005, 0, dz)),
-                        moving_surface(square, 2, SurfaceKind::static_body, Eigen::Vector3d::Zero())},
+        detect_checked({moving_surface(probe, 1, BodyKind::rigid, Eigen::Vector3d(0.0005, 0, dz)),
+                        moving_surface(square, 2, BodyKind::fixed, Eigen::Vector3d::Zero())},
                        {}, 0.002);
     int resting = 0;
     for (const ContactCandidate& c : found)
@@ -271,8 +271,8 @@ TEST(CollisionRobustness, VertexOverAFacetIsHeldByThatFacetAlone) {
   probe.vertices.rowwise() -= probe.vertices.row(0);
   const Eigen::Matrix3d turn = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d(1, 1, 1), normal).toRotationMatrix();
   probe.vertices = (probe.vertices * turn.transpose()).rowwise() + (on_facet + 0.0005 * normal).transpose();
-  const auto found = detect_checked({moving_surface(probe, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero()),
-                                     moving_surface(roller, 2, SurfaceKind::kinematic, Eigen::Vector3d::Zero())},
+  const auto found = detect_checked({moving_surface(probe, 1, BodyKind::deformable, Eigen::Vector3d::Zero()),
+                                     moving_surface(roller, 2, BodyKind::kinematic, Eigen::Vector3d::Zero())},
                                     {}, 0.002);
   int held = 0;
   for (const ContactCandidate& c : found)
@@ -319,10 +319,10 @@ TEST(CollisionRobustness, EdgeAlreadyThroughARidgeCountsAsPenetrating) {
   // The same edge as far outside keeps p - q. Also between two closed
   // deformable bodies, and whichever body is side A.
   const double depth = 0.0002;
-  for (SurfaceKind box_kind : {SurfaceKind::static_body, SurfaceKind::deformable})
+  for (BodyKind box_kind : {BodyKind::fixed, BodyKind::deformable})
     for (double sign : {1.0, -1.0}) {
       const CollisionSurface tet = moving_surface(tetrahedron_across_the_ridge(sign * depth), 1,
-                                                  SurfaceKind::deformable, Eigen::Vector3d::Zero());
+                                                  BodyKind::deformable, Eigen::Vector3d::Zero());
       const CollisionSurface box = moving_surface(testing::box({0.05, 0.05, 0.05}), 2, box_kind, Eigen::Vector3d::Zero());
       const auto found = detect_checked({tet, box}, {}, 0.002);
       int crossings = 0;
@@ -359,8 +359,8 @@ TEST(CollisionRobustness, DegenerateTriangles) {
       0, 1, 3;               // a proper one
   TriMesh probe = testing::box({0.05, 0.05, 0.05});
   probe.vertices.rowwise() += Eigen::RowVector3d(0.5, -0.0505, 0.0);  // a face 0.5 mm from the collinear one
-  const CollisionSurface deg = moving_surface(bad, 2, SurfaceKind::deformable, Eigen::Vector3d(0, 0, 0.0001));
-  const CollisionSurface box = moving_surface(probe, 1, SurfaceKind::rigid, Eigen::Vector3d(0, 0.0002, 0));
+  const CollisionSurface deg = moving_surface(bad, 2, BodyKind::deformable, Eigen::Vector3d(0, 0, 0.0001));
+  const CollisionSurface box = moving_surface(probe, 1, BodyKind::rigid, Eigen::Vector3d(0, 0.0002, 0));
   const auto found = detect_checked({box, deg}, {}, 0.002);
   bool saw_degenerate = false;
   for (const ContactCandidate& c : found) {
@@ -378,8 +378,8 @@ TEST(CollisionRobustness, VertexOnVertexGivesOneCandidate) {
   TriMesh probe = testing::box({0.02, 0.02, 0.02});
   probe.vertices.rowwise() += Eigen::RowVector3d(0.02, 0.02, 0.02);  // corner 0 at the origin
   const auto found =
-      detect_checked({moving_surface(probe, 1, SurfaceKind::deformable, Eigen::Vector3d(0, 0, -0.0005)),
-                      moving_surface(sheet, 2, SurfaceKind::static_body, Eigen::Vector3d::Zero())},
+      detect_checked({moving_surface(probe, 1, BodyKind::deformable, Eigen::Vector3d(0, 0, -0.0005)),
+                      moving_surface(sheet, 2, BodyKind::fixed, Eigen::Vector3d::Zero())},
                      {}, 0.002);
   int at_corner = 0;
   for (const ContactCandidate& c : found)
@@ -394,8 +394,8 @@ TEST(CollisionRobustness, VertexOnVertexGivesOneCandidate) {
 TEST(CollisionRobustness, PlanesAndPrescribedSurfaces) {
   TriMesh cube = testing::box({0.05, 0.05, 0.05});
   cube.vertices.col(2).array() += 0.051;  // 1 mm above the ground
-  CollisionSurface moving = moving_surface(cube, 1, SurfaceKind::rigid, Eigen::Vector3d(0, 0, -0.003));
-  CollisionSurface parked = moving_surface(cube, 2, SurfaceKind::kinematic, Eigen::Vector3d::Zero());
+  CollisionSurface moving = moving_surface(cube, 1, BodyKind::rigid, Eigen::Vector3d(0, 0, -0.003));
+  CollisionSurface parked = moving_surface(cube, 2, BodyKind::kinematic, Eigen::Vector3d::Zero());
   const std::vector<CollisionPlane> ground = {{7, Eigen::Vector3d::Zero(), Eigen::Vector3d::UnitZ()}};
   const auto found = detect_checked({moving}, ground, 0.002);
   ASSERT_EQ(found.size(), 4u);  // the four bottom corners

@@ -61,7 +61,7 @@ inline void perturb(TriMesh& mesh, double amount, std::mt19937& rng) {
     for (int k = 0; k < 3; ++k) mesh.vertices(i, k) += u(rng);
 }
 
-inline CollisionSurface moving_surface(const TriMesh& mesh, int body, SurfaceKind kind, const Eigen::Vector3d& translation,
+inline CollisionSurface moving_surface(const TriMesh& mesh, int body, BodyKind kind, const Eigen::Vector3d& translation,
                                 const Eigen::Matrix3d& rotation = Eigen::Matrix3d::Identity()) {
   CollisionSurface s;
   s.body = body;

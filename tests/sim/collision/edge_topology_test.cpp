@@ -40,14 +40,14 @@ TEST(EdgeTopology, ClosedBoxHasBothThirdVerticesInWindingOrder) {
     EXPECT_TRUE(runs(box.triangles, triangle_of(box.triangles, lo, hi, opposite[e][0]), lo, hi)) << lo << "-" << hi;
     EXPECT_TRUE(runs(box.triangles, triangle_of(box.triangles, lo, hi, opposite[e][1]), hi, lo)) << lo << "-" << hi;
   }
-  const CollisionSurface surface = testing::moving_surface(box, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero());
+  const CollisionSurface surface = testing::moving_surface(box, 1, BodyKind::deformable, Eigen::Vector3d::Zero());
   EXPECT_TRUE(prepare_surface(surface, 0).closed);
 }
 
 TEST(EdgeTopology, OpenOrMiswoundSurfacesAreNotClosed) {
   // A sheet: its border edges have one triangle.
   const TriMesh sheet = testing::grid(3, 0.01);
-  EXPECT_FALSE(prepare_surface(testing::moving_surface(sheet, 1, SurfaceKind::static_body, Eigen::Vector3d::Zero()), 0).closed);
+  EXPECT_FALSE(prepare_surface(testing::moving_surface(sheet, 1, BodyKind::fixed, Eigen::Vector3d::Zero()), 0).closed);
   // A box with one triangle turned round: its three edges each have two
   // triangles running the same way.
   TriMesh box = testing::box({0.1, 0.1, 0.1});
@@ -61,7 +61,7 @@ TEST(EdgeTopology, OpenOrMiswoundSurfacesAreNotClosed) {
     unwound += opposite[e][0] < 0;
   }
   EXPECT_EQ(unwound, 3);
-  EXPECT_FALSE(prepare_surface(testing::moving_surface(box, 1, SurfaceKind::deformable, Eigen::Vector3d::Zero()), 0).closed);
+  EXPECT_FALSE(prepare_surface(testing::moving_surface(box, 1, BodyKind::deformable, Eigen::Vector3d::Zero()), 0).closed);
 }
 
 }  // namespace

@@ -11,7 +11,7 @@ namespace {
 constexpr double kMargin = 0.002;  // m
 
 // A 0.1 m cube centred at `center`, of the given kind.
-CollisionSurface cube_at(const Eigen::Vector3d& center, SurfaceKind kind = SurfaceKind::rigid) {
+CollisionSurface cube_at(const Eigen::Vector3d& center, BodyKind kind = BodyKind::rigid) {
   const TriMesh box = make_box(Eigen::Vector3d::Constant(0.1), 2);
   CollisionSurface s;
   s.kind = kind;
@@ -52,8 +52,8 @@ TEST(InitialOverlap, ABodyBelowThePlaneIsBehindIt) {
 TEST(InitialOverlap, PrescribedSurfacesMayOverlapEachOtherAndThePlane) {
   CollisionPlane ground;
   ground.normal = Eigen::Vector3d::UnitY();
-  const std::vector<CollisionSurface> surfaces = {cube_at({0, 0.0, 0}, SurfaceKind::static_body),
-                                                  cube_at({0.05, 0.0, 0}, SurfaceKind::kinematic)};
+  const std::vector<CollisionSurface> surfaces = {cube_at({0, 0.0, 0}, BodyKind::fixed),
+                                                  cube_at({0.05, 0.0, 0}, BodyKind::kinematic)};
   EXPECT_FALSE(deepest_overlap(surfaces, {ground}, {}, kMargin).has_value());
 }
 

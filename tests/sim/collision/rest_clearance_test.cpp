@@ -76,7 +76,7 @@ TEST(RestClearance, RigidMotionDisplacesNothing) {
 CollisionSurface self_surface(const TriMesh& mesh, const Points& x0, const Points& x1) {
   CollisionSurface s;
   s.body = 1;
-  s.kind = SurfaceKind::deformable;
+  s.kind = BodyKind::deformable;
   s.triangles = mesh.triangles;
   s.x0 = x0;
   s.x1 = x1;

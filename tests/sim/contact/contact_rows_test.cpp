@@ -57,7 +57,7 @@ struct RowScene {
     r.transform.rotation = {10, 20, 30};
     rigid = build_rigid_body(r, device, "rigid_bodies/0", 0.002);
     rigid.linear_node = soft.num_nodes;
-    r.motion = RigidMotion::kinematic;
+    r.kind = BodyKind::kinematic;
     r.transform.position = {0.0, 0.3, 0.1};
     r.velocity = {0.3, -0.2, 0.1};
     r.angular_velocity = {1.0, 2.0, -0.5};
@@ -116,19 +116,19 @@ struct RowScene {
 
   ContactModel model() {
     std::vector<ContactSurface> s(3);
-    s[0].kind = SurfaceKind::deformable;
+    s[0].kind = BodyKind::deformable;
     s[0].triangles = soft.surface.triangles;
     s[0].embedding = &soft.embedding;
     s[0].tets = &soft.rest.tets;
     s[0].pinned = &soft.pinned;
     s[0].mu_static = 0.8;
-    s[1].kind = SurfaceKind::rigid;
+    s[1].kind = BodyKind::rigid;
     s[1].triangles = rigid.triangles;
     s[1].local = &rigid.local;
     s[1].pose = rigid.pose;
     s[1].linear_node = rigid.linear_node;
     s[1].mu_static = 0.2;
-    s[2].kind = SurfaceKind::kinematic;
+    s[2].kind = BodyKind::kinematic;
     s[2].triangles = kinematic.triangles;
     s[2].local = &kinematic.local;
     s[2].pose = kinematic.pose;

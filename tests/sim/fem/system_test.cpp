@@ -37,7 +37,7 @@ TEST(System, BlockSparseMatchesEigenAndPcgMatchesDirectSolve) {
   EXPECT_LT((y - S * probe).norm(), 1e-12 * y.norm());
 
   // Pinned nodes: identity rows and columns.
-  const DeformableBody& body = world.body(0);
+  const DeformableBody& body = world.deformable_body(0);
   for (int n = 0; n < body.num_nodes; ++n)
     if (body.pinned[static_cast<size_t>(n)]) {
       EXPECT_EQ(A.diagonal_block(n), Eigen::Matrix3d::Identity());
@@ -86,7 +86,7 @@ TEST(System, RigidModesCutPcgIterationsOnAStiffBody) {
   const Eigen::VectorXd x = world.positions();  // where step() assembles A
   world.step();
   const BlockSparseMatrix& A = world.system_matrix();
-  const DeformableBody& body = world.body(0);
+  const DeformableBody& body = world.deformable_body(0);
   RigidModeNodes modes;
   for (int n = 0; n < body.num_nodes; ++n) {
     modes.nodes.push_back(body.node_offset + n);

@@ -127,7 +127,7 @@ TEST(World, PinnedNodesStayAndOthersSag) {
   World world(desc);
   const Eigen::VectorXd x0 = world.positions();
   for (int i = 0; i < 30; ++i) ASSERT_EQ(world.step().status, StepStatus::ok);
-  const DeformableBody& body = world.body(0);
+  const DeformableBody& body = world.deformable_body(0);
   int pinned = 0;
   for (int n = 0; n < body.num_nodes; ++n) {
     if (!body.pinned[static_cast<size_t>(n)]) continue;

@@ -113,7 +113,7 @@ TEST(RigidBody, BuildPlacesCentreAndRejectsOpenSurfaces) {
   RigidBodyDesc light = desc;
   light.density = 0.0;
   EXPECT_THROW(build_rigid_body(light, device, "rigid_bodies/2", 0.002), Error);
-  light.motion = RigidMotion::kinematic;  // density is not used by kinematic bodies
+  light.kind = BodyKind::kinematic;  // density is not used by kinematic bodies
   EXPECT_NO_THROW(build_rigid_body(light, device, "rigid_bodies/2", 0.002));
 }
 
