@@ -4,6 +4,7 @@
 
 #include "core/error.h"
 #include "sim/collision/collision_proxy.h"
+#include "sim/geometry/mesh_stats.h"
 #include "sim/geometry/skew.h"
 #include "sim/geometry/tetrahedralize.h"
 #include "sim/rigid/mass_properties.h"
@@ -47,10 +48,16 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
   Eigen::Vector3d reference = desc.transform.position;
   if (desc.kind == BodyKind::rigid) {
     if (!(desc.density > 0.0) || !std::isfinite(desc.density)) throw bad_input(where + "/density: must be > 0");
-    const MassProperties props = mass_properties(mesh, desc.density);
+    // A surface that is not closed bounds no volume by itself: its solid is
+    // the lattice its winding number fills, as a deformable body's would be.
+    const bool closed = compute_mesh_stats(mesh).watertight;
+    const MassProperties props = closed ? mass_properties(mesh, desc.density)
+                                        : mass_properties(tetrahedralize(mesh, kDefaultResolution), desc.density);
     if (!(props.volume > 0.0))
-      throw bad_input(where + "/mesh: a dynamic body needs a closed, outward-oriented surface (enclosed volume " +
-                      std::to_string(props.volume) + " m^3)");
+      throw bad_input(where + "/mesh: " +
+                      (closed ? "the closed surface encloses " + std::to_string(props.volume) +
+                                    " m^3: its faces are wound inward; flip them"
+                              : std::string("the surface encloses no volume")));
     body.mass = props.mass;
     body.inertia = props.inertia;
     reference = props.center;

@@ -54,8 +54,9 @@ struct RigidBody {
 // Throws bad_input naming `where` (e.g. "rigid_bodies/2") for an invalid
 // description: a deformable kind, empty or non-finite mesh, a dynamic body
 // with non-positive density or enclosed volume. Mass properties come from the
-// mesh; `margin` (m, the world's contact margin) sets the default collision
-// surface.
+// mesh when it is closed, else from the lattice solid its winding number fills
+// (sim/geometry/tetrahedralize.h); `margin` (m, the world's contact margin)
+// sets the default collision surface.
 RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin);
 
 // The pose after moving for h seconds at constant velocity and angular

@@ -19,13 +19,13 @@ struct FrictionDesc {
 };
 
 // A body that moves as a whole. A `rigid` one is dynamic: 6 DoF, mass and
-// inertia from its closed surface and density; a `kinematic` one follows a
+// inertia from its density and the solid its surface bounds (closed or not); a `kinematic` one follows a
 // scripted constant velocity and angular velocity about transform.position; a
 // `fixed` one (scene type "static") never moves.
 struct RigidBodyDesc {
   std::string name = "rigid";
   BodyKind kind = BodyKind::rigid;  // rigid, kinematic or fixed; never deformable
-  TriMesh mesh;                 // surface in local coordinates (closed for dynamic bodies)
+  TriMesh mesh;                 // surface in local coordinates
   Transform transform;          // local -> world at time 0
   double density = 1000.0;      // kg/m^3, dynamic only
   FrictionDesc friction;

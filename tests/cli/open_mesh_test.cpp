@@ -72,6 +72,15 @@ TEST(OpenMesh, DropRunsAndTheSummaryNamesTheOpenMesh) {
   const json run = json::parse(file_bytes(dir / "out" / "run.json"));
   EXPECT_EQ(run["warnings"]["open_meshes"], json::array({"openbox"}));
   EXPECT_NE(run["warnings"]["summary"].get<std::string>().find("open mesh"), std::string::npos);
+  // A rigid drop weighs the solid its winding number fills; a static turntable's mesh is only drawn, so nothing to warn of.
+  const CommandResult rigid = run_recoil("drop " + shell_quote(open) + " --material rigid -q --seconds 0.1 --no-render -o " +
+                                         shell_quote(dir / "rigid"));
+  ASSERT_EQ(rigid.exit_code, 0) << rigid.err;
+  EXPECT_NE(rigid.err.find("open mesh: 'openbox'"), std::string::npos) << rigid.err;
+  const CommandResult drawn = run_recoil("turntable " + shell_quote(open) + " --turn-frames 1 --no-render -o " +
+                                         shell_quote(dir / "turntable"));
+  ASSERT_EQ(drawn.exit_code, 0) << drawn.err;
+  EXPECT_EQ(drawn.err.find("open mesh"), std::string::npos) << drawn.err;
   // -q hides the summary line, except for its warnings.
   const CommandResult quiet = run_recoil("drop " + shell_quote(open) + " -q --seconds 0.1 --no-render -o " + shell_quote(dir / "q"));
   EXPECT_NE(quiet.err.find("open mesh: 'openbox'"), std::string::npos) << quiet.err;

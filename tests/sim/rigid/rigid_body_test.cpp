@@ -10,6 +10,7 @@
 #include "sim/collision/embree_scene.h"
 #include "sim/geometry/primitives.h"
 #include "sim/geometry/skew.h"
+#include "sim/geometry/tetrahedralize.h"
 #include "sim/rigid/mass_properties.h"
 
 namespace recoil::sim {
@@ -94,7 +95,7 @@ TEST(MassProperties, SphereAndCylinderApproachAnalyticValues) {
   EXPECT_LT(relative(c.inertia(2, 2), ix), 1e-3);
 }
 
-TEST(RigidBody, BuildPlacesCentreAndRejectsOpenSurfaces) {
+TEST(RigidBody, BuildPlacesCentreWeighsOpenSurfacesAndRejectsInwardOnes) {
   EmbreeDevice device;
   RigidBodyDesc desc;
   desc.mesh = make_box({0.2, 0.2, 0.2}, 1);
@@ -110,6 +111,13 @@ TEST(RigidBody, BuildPlacesCentreAndRejectsOpenSurfaces) {
   RigidBodyDesc inward = desc;  // wound inside out: negative enclosed volume
   inward.mesh.triangles = inward.mesh.triangles.rowwise().reverse().eval();
   EXPECT_THROW(build_rigid_body(inward, device, "rigid_bodies/1", 0.002), Error);
+  // Open: the lattice its winding number fills, a box of the same mass to a cell's layer.
+  RigidBodyDesc open = desc;
+  open.mesh.triangles = open.mesh.triangles.topRows(open.mesh.num_triangles() - 2).eval();
+  const RigidBody opened = build_rigid_body(open, device, "rigid_bodies/3", 0.002);
+  EXPECT_GE(opened.mass, body.mass);
+  EXPECT_LT(opened.mass, 1000.0 * std::pow(0.2 * (1.0 + 2.0 / kDefaultResolution), 3) + 1e-9);
+  EXPECT_LT((opened.pose.center - desc.transform.position).norm(), 0.2 / kDefaultResolution);
   RigidBodyDesc light = desc;
   light.density = 0.0;
   EXPECT_THROW(build_rigid_body(light, device, "rigid_bodies/2", 0.002), Error);
