@@ -188,10 +188,11 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   Progress progress(global, job.label, static_cast<int>(selected.size()));
   const auto run_start = Clock::now();
   RunResult result;
-  for (const SceneBody& body : scene.bodies)
-    // Only a moving body's solid comes from its winding number; a static or kinematic one is its surface.
+  // Only a moving body's solid comes from its winding number; a static or kinematic one is its surface.
+  for (const SceneBody& body : scene.bodies) {
     if (body.open_mesh && (body.kind == sim::BodyKind::deformable || body.kind == sim::BodyKind::rigid))
       result.open_meshes.push_back(body.name);
+  }
   result.settle_limit = scene.settle;
   size_t next = 0;  // index into selected
   long inverted_steps = 0;
