@@ -50,8 +50,8 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
   cmd->footer(
       "The mesh is stood on a ground plane, its --up axis (default +Y) turned to world +Y, and the\n"
       "camera circles it once in --turn-frames frames; frames are written as DIR/frame_0001.png, ...\n"
-      "--frames picks which of them to write, as in `run`. With --settle the mesh is released\n"
-      "where it stands and simulated (not drawn) until it rests, at most --settle-seconds, so the\n"
+      "--frames picks which of them to write, as in `run`. With --settle the mesh is released just\n"
+      "above where it stands and simulated (not drawn) until it rests, at most --settle-seconds, so the\n"
       "physics picks its stable pose; the orbit then frames the resting mesh. Like `run`, it writes\n"
       "scene.json, stats.jsonl and run.json beside the frames, and takes --video, --resume and --no-render.\n"
       "As in `drop`, a mesh whose longest side is outside 5 cm - 2 m is scaled to 30 cm.\n\n"
