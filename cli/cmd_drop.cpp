@@ -15,9 +15,11 @@ struct DropCommandOptions {
 };
 
 int run_drop(const DropCommandOptions& options, const GlobalOptions& global) {
-  const nlohmann::json document = build_drop_scene(options.drop);
+  ImportedMeshes imported;
+  const nlohmann::json document = build_drop_scene(options.drop, &imported);
   const std::string& saved = options.run.save_scene;
-  SceneDesc scene = parse_scene(document, saved.empty() ? "drop" : saved, std::filesystem::current_path());
+  SceneDesc scene =
+      parse_scene(document, saved.empty() ? "drop" : saved, std::filesystem::current_path(), std::move(imported));
   return execute_run(std::move(scene), options.run, global, "drop");
 }
 

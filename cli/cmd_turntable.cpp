@@ -20,9 +20,11 @@ int run_turntable(TurntableOptions options, const GlobalOptions& global) {
   to_render_settings(options.run.render);  // --fps and --resolution, named, before they size the scene
   options.turntable.settle = options.settle ? options.settle_seconds : 0.0;
   options.turntable.fps = options.run.render.fps;
-  const nlohmann::json document = build_turntable_scene(options.turntable);
+  ImportedMeshes imported;
+  const nlohmann::json document = build_turntable_scene(options.turntable, &imported);
   const std::string& saved = options.run.save_scene;
-  SceneDesc scene = parse_scene(document, saved.empty() ? "turntable" : saved, std::filesystem::current_path());
+  SceneDesc scene =
+      parse_scene(document, saved.empty() ? "turntable" : saved, std::filesystem::current_path(), std::move(imported));
   return execute_run(std::move(scene), options.run, global, "turntable");
 }
 

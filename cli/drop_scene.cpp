@@ -29,11 +29,12 @@ struct Source {
 };
 
 // Sizes and places the mesh as it will stand: after its up axis is turned to +Y.
-Source load_source(const std::string& path, UpAxis up) {
+Source load_source(const std::string& path, UpAxis up, ImportedMeshes* imported) {
   Source s;
   s.path = fs::absolute(path).lexically_normal().string();
   s.stem = fs::path(path).stem().string();
   sim::TriMesh mesh = sim::import_surface(path);
+  if (imported) imported->emplace(s.path, mesh);
   apply_up(up, mesh);
   const sim::Aabb box = sim::bounding_box(mesh);
   const double size = box.extent().maxCoeff();
@@ -62,10 +63,10 @@ double uniform(std::mt19937_64& rng, double lo, double hi) {
 
 }  // namespace
 
-nlohmann::json build_drop_scene(const DropSettings& settings) {
+nlohmann::json build_drop_scene(const DropSettings& settings, ImportedMeshes* imported) {
   if (settings.meshes.empty()) throw bad_input("drop: give at least one mesh");
   std::vector<Source> sources;
-  for (const std::string& path : settings.meshes) sources.push_back(load_source(path, settings.up));
+  for (const std::string& path : settings.meshes) sources.push_back(load_source(path, settings.up, imported));
   const bool pile = settings.count > 1;
   const int bodies = pile ? settings.count : static_cast<int>(sources.size());
   const bool many = bodies > 2;

@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "cli/imported_meshes.h"
 #include "cli/up_axis.h"
 
 namespace recoil::cli {
@@ -30,8 +31,9 @@ struct DropSettings {
   double collision_edge = 0.0;
 };
 
-// A scene file document with absolute mesh paths. Throws
-// bad_input naming the mesh for unreadable or empty meshes.
-nlohmann::json build_drop_scene(const DropSettings& settings);
+// A scene file document with absolute mesh paths; the meshes read to size it
+// go into `imported` when given. Throws bad_input naming the mesh for
+// unreadable or empty meshes.
+nlohmann::json build_drop_scene(const DropSettings& settings, ImportedMeshes* imported = nullptr);
 
 }  // namespace recoil::cli

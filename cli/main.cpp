@@ -5,27 +5,9 @@
 #include <string>
 
 #include "cli/commands.h"
+#include "cli/shell_quote.h"
 #include "cli/usage_error.h"
 #include "core/error.h"
-
-namespace {
-
-// The arguments joined as a shell would take them back: plain words as they
-// are, anything else in single quotes.
-std::string shell_command_line(int argc, char** argv) {
-  std::string line = "recoil";
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const bool plain = !arg.empty() && arg.find_first_not_of("abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                             "0123456789_./=:,+-@%") == std::string::npos;
-    std::string quoted = "'";
-    for (const char c : arg) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
-    line += " " + (plain ? arg : quoted + "'");
-  }
-  return line;
-}
-
-}  // namespace
 
 int main(int argc, char** argv) {
   using namespace recoil;
@@ -36,7 +18,8 @@ int main(int argc, char** argv) {
   app.footer("Run `recoil COMMAND --help` for a command's options and examples.");
 
   cli::GlobalOptions global;
-  global.command_line = shell_command_line(argc, argv);
+  global.command_line = "recoil";
+  for (int i = 1; i < argc; ++i) global.command_line += " " + cli::shell_word(argv[i]);
   app.add_flag("-q,--quiet", global.quiet, "No progress bar or summary lines")->configurable(false);
   app.add_flag("--log-json", global.log_json, "Machine-readable progress lines (JSON) on stderr");
   app.add_option("--max-memory", global.max_memory_gib,

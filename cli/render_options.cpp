@@ -67,12 +67,13 @@ render::PngOptions to_png_options(const RenderOptions& options) {
   return png;
 }
 
-render::Rgb palette_color(int index) {
+std::string palette_hex(int index) {
   // Warm clay first (the hero body), then muted, well-separated hues.
-  static const render::Rgb palette[] = {{0.851f, 0.627f, 0.400f}, {0.376f, 0.620f, 0.780f}, {0.569f, 0.737f, 0.459f},
-                                        {0.831f, 0.459f, 0.471f}, {0.651f, 0.561f, 0.788f}, {0.886f, 0.776f, 0.408f},
-                                        {0.412f, 0.733f, 0.706f}, {0.780f, 0.600f, 0.722f}};
+  static const char* const palette[] = {"#d9a066", "#609ec7", "#91bc75", "#d47578",
+                                        "#a68fc9", "#e2c668", "#69bbb4", "#c799b8"};
   return palette[index % (sizeof(palette) / sizeof(palette[0]))];
 }
+
+render::Rgb palette_color(int index) { return parse_color(palette_hex(index), "palette"); }
 
 }  // namespace recoil::cli

@@ -34,7 +34,9 @@ render::PngOptions to_png_options(const RenderOptions& options);
 // naming `what` (the option or field) for anything else.
 render::Rgb parse_color(const std::string& text, const std::string& what);
 
-// The colour of the i-th body when none is given: a soft, distinguishable palette.
-render::Rgb palette_color(int index);
+// The colour of the i-th body when none is given: a soft, distinguishable
+// palette of 8-bit colours, so a scene file records them exactly.
+std::string palette_hex(int index);
+render::Rgb palette_color(int index);  // palette_hex(index) parsed
 
 }  // namespace recoil::cli

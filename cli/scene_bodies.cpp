@@ -314,12 +314,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   if (body.has("color")) {
     out.color = parse_body_color(body.child("color"));
   } else {
-    // The palette colour as the resolved scene records it, so that rerunning
-    // that scene draws the same bytes.
-    const render::Rgb palette = palette_color(so_far.mesh_bodies++);
-    char hex[8];
-    std::snprintf(hex, sizeof(hex), "#%02x%02x%02x", static_cast<int>(std::lround(palette[0] * 255)),
-                  static_cast<int>(std::lround(palette[1] * 255)), static_cast<int>(std::lround(palette[2] * 255)));
+    const std::string hex = palette_hex(so_far.mesh_bodies++);
     body.string_or("color", hex);
     out.color = parse_color(hex, "color");
   }
@@ -404,8 +399,15 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
 
 }  // namespace
 
-void parse_bodies(const std::vector<JsonCursor>& bodies, const fs::path& base_dir, SceneDesc& scene) {
+void parse_bodies(const std::vector<JsonCursor>& bodies, const fs::path& base_dir, SceneDesc& scene,
+                  ImportedMeshes imported) {
   BodiesSoFar so_far;
+  for (auto& [path, mesh] : imported) {
+    Geometry g;
+    g.open = !sim::compute_mesh_stats(mesh).watertight;
+    g.surface = std::move(mesh);
+    so_far.files.emplace(path, std::move(g));
+  }
   scene.bodies.reserve(bodies.size());
   for (size_t i = 0; i < bodies.size(); ++i) parse_body(bodies[i], static_cast<int>(i), base_dir, so_far, scene);
 }

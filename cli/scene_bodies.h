@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <vector>
 
+#include "cli/imported_meshes.h"
 #include "cli/json_cursor.h"
 #include "cli/scene_desc.h"
 
@@ -11,7 +12,9 @@ namespace recoil::cli {
 
 // Parses the bodies (cursors at /bodies/i) and appends them to `scene`
 // (scene.bodies and the matching WorldDesc lists). Names must be unique; a
-// mesh file named by several bodies is read once.
-void parse_bodies(const std::vector<JsonCursor>& bodies, const std::filesystem::path& base_dir, SceneDesc& scene);
+// mesh file named by several bodies is read once, and one in `imported` not
+// at all.
+void parse_bodies(const std::vector<JsonCursor>& bodies, const std::filesystem::path& base_dir, SceneDesc& scene,
+                  ImportedMeshes imported = {});
 
 }  // namespace recoil::cli

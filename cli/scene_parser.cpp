@@ -134,7 +134,8 @@ const SceneBody* SceneDesc::find(const std::string& body_name) const {
   return nullptr;
 }
 
-SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, const fs::path& base_dir) {
+SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, const fs::path& base_dir,
+                      ImportedMeshes imported) {
   SceneDesc scene;
   scene.resolved = nlohmann::json::object();
   const JsonCursor root(document, scene.resolved, file);
@@ -153,7 +154,7 @@ SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, c
     bodies_field.fail(std::to_string(bodies_field.value().size()) + " bodies; at most " + std::to_string(kMaxBodies));
   const std::vector<JsonCursor> bodies = bodies_field.elements();
   if (bodies.empty()) bodies_field.fail("a scene needs at least one body");
-  parse_bodies(bodies, base_dir, scene);
+  parse_bodies(bodies, base_dir, scene, std::move(imported));
   parse_render(root.child_or_empty("render"), scene);
   return scene;
 }

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli/imported_meshes.h"
 #include "cli/scene_desc.h"
 
 namespace recoil::cli {
@@ -15,7 +16,9 @@ namespace recoil::cli {
 SceneDesc load_scene(const std::filesystem::path& file);
 
 // Parses an already loaded document. `file` names it in messages; relative
-// paths resolve against `base_dir`.
-SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, const std::filesystem::path& base_dir);
+// paths resolve against `base_dir`; mesh files in `imported` are taken from
+// there instead of being read again.
+SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, const std::filesystem::path& base_dir,
+                      ImportedMeshes imported = {});
 
 }  // namespace recoil::cli

@@ -6,7 +6,7 @@
 
 namespace recoil::cli {
 
-nlohmann::json build_turntable_scene(const TurntableSettings& settings) {
+nlohmann::json build_turntable_scene(const TurntableSettings& settings, ImportedMeshes* imported) {
   DropSettings drop;
   drop.meshes = {settings.mesh};
   drop.material = settings.settle > 0.0 ? settings.material : "static";
@@ -17,7 +17,7 @@ nlohmann::json build_turntable_scene(const TurntableSettings& settings) {
   drop.height_per_size = settings.settle > 0.0 ? 0.1 : 0.0;
   drop.up = settings.up;
   drop.seconds = (settings.turn_frames - 1) / settings.fps;
-  nlohmann::json scene = build_drop_scene(drop);
+  nlohmann::json scene = build_drop_scene(drop, imported);
   scene["name"] = std::filesystem::path(settings.mesh).stem().string();
   scene["description"] = "built by recoil turntable";
   scene["simulation"]["settle"] = settings.settle;

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli/imported_meshes.h"
 #include "cli/up_axis.h"
 
 namespace recoil::cli {
@@ -21,8 +22,9 @@ struct TurntableSettings {
   std::string material = "rigid"; // of a settling mesh: a `drop` preset
 };
 
-// A scene file document with an absolute mesh path; throws bad_input naming
-// the mesh for unreadable or empty meshes.
-nlohmann::json build_turntable_scene(const TurntableSettings& settings);
+// A scene file document with an absolute mesh path; the mesh read to size it
+// goes into `imported` when given. Throws bad_input naming the mesh for
+// unreadable or empty meshes.
+nlohmann::json build_turntable_scene(const TurntableSettings& settings, ImportedMeshes* imported = nullptr);
 
 }  // namespace recoil::cli

@@ -8,22 +8,11 @@
 #include <cstdlib>
 #include <sstream>
 
+#include "cli/shell_quote.h"
 #include "core/error.h"
 
 namespace recoil::cli {
 namespace fs = std::filesystem;
-namespace {
-
-std::string shell_quote(const std::string& text) {
-  std::string out = "'";
-  for (char c : text) {
-    if (c == '\'') out += "'\\''";
-    else out += c;
-  }
-  return out + "'";
-}
-
-}  // namespace
 
 fs::path find_ffmpeg() {
   const char* path = std::getenv("PATH");
