@@ -40,6 +40,14 @@ std::uint64_t ply_type_bytes(const std::string& type) {
   return 1;
 }
 
+// The scalar type names of the PLY format, in both its spellings.
+bool is_ply_type(const std::string& type) {
+  for (const char* t : {"char", "uchar", "short", "ushort", "int", "uint", "float", "double", "int8", "uint8", "int16",
+                        "uint16", "int32", "uint32", "float32", "float64"})
+    if (type == t) return true;
+  return false;
+}
+
 [[noreturn]] void refuse_counts(const std::string& name, const std::string& declared, std::uintmax_t file_size) {
   throw bad_input(name + ": declares " + declared + ", more than its " + std::to_string(file_size) +
                   " bytes can hold");
@@ -116,33 +124,42 @@ void check_ply(const std::string& head, size_t head_offset, const std::filesyste
     next = std::min(head.find_first_of(kLineEnd, start), head.size());
     const std::string line = head.substr(start, next - start);
     std::istringstream words(line);
-    std::string keyword, a, b;
-    words >> keyword >> a >> b;  // b: a list's count type
-    // Only "end_header" at the start of a line, then a line end (not the file's end), a space
-    // or a tab: assimp 5.2 hangs on near misses ("end_hEader", "end_header\v", "end_header"
-    // as the file's last bytes).
-    ended = line.rfind("end_header", 0) == 0 &&
-            (line.size() == 10 ? next < head.size() : line[10] == ' ' || line[10] == '\t');
-    if (keyword == "format") {
+    std::vector<std::string> w;
+    for (std::string word; words >> word;) w.push_back(word);
+    const std::string keyword = w.empty() ? "" : w[0];
+    const auto refuse_line = [&](const std::string& why) {
+      throw bad_input(name + ": PLY header line \"" + quoted_line(line) + "\" " + why);
+    };
+    if (keyword == "end_header") {
+      // Only "end_header" then a line end (not the file's end), a space or a tab:
+      // assimp 5.2 hangs on near misses ("end_header\v", "end_header" as the file's last bytes).
+      ended = line.rfind("end_header", 0) == 0 &&
+              (line.size() == 10 ? next < head.size() : line[10] == ' ' || line[10] == '\t');
+      if (!ended) refuse_line("is not a plain end_header");
+    } else if (line.find("end_header") != std::string::npos) {
+      // assimp takes the header to end at the first "end_header" wherever it stands.
+      refuse_line("holds end_header but is not one");
+    } else if (keyword == "format") {
       // assimp 5.2 may search forever past a format line it cannot read, so only the three forms pass.
-      std::string extra;
-      words >> extra;
-      const bool known = a == "ascii" || a == "binary_little_endian" || a == "binary_big_endian";
-      if (!known || b.empty() || b.find_first_not_of("0123456789.") != std::string::npos || !extra.empty())
+      const bool known = w.size() == 3 && (w[1] == "ascii" || w[1] == "binary_little_endian" ||
+                                           w[1] == "binary_big_endian");
+      if (!known || w[2].find_first_not_of("0123456789.") != std::string::npos)
         throw bad_input(name + ": PLY format line \"" + quoted_line(line) +
                         "\" is not \"format ascii|binary_little_endian|binary_big_endian VERSION\"");
-      ascii = a == "ascii";
+      ascii = w[1] == "ascii";
     } else if (keyword == "element") {
-      // The largest number on the line: assimp finds the count even where the name is missing.
-      PlyElement e{a, 0, 0, {}};
-      std::istringstream rest(line);
-      for (std::string word; rest >> word;)
-        if (std::uint64_t n = 0; parse_count(word, n)) e.count = std::max(e.count, n);
-      elements.push_back(e);
-    } else if (keyword == "property" && !elements.empty()) {
-      elements.back().min_bytes += ascii ? 2 : ply_type_bytes(a == "list" ? b : a);  // a list may be empty
-      elements.back().is_list.push_back(a == "list");
-    }
+      std::uint64_t count = 0;
+      if (w.size() != 3 || w[2].find_first_not_of("0123456789") != std::string::npos || !parse_count(w[2], count))
+        refuse_line("is not \"element NAME COUNT\"");
+      elements.push_back(PlyElement{w[1], count, 0, {}});
+    } else if (keyword == "property") {
+      const bool list = w.size() > 1 && w[1] == "list";
+      if (elements.empty()) refuse_line("comes before any element");
+      if (list ? w.size() != 5 || !is_ply_type(w[2]) || !is_ply_type(w[3]) : w.size() != 3 || !is_ply_type(w[1]))
+        refuse_line("is not \"property TYPE NAME\" or \"property list COUNT_TYPE ITEM_TYPE NAME\"");
+      elements.back().min_bytes += ascii ? 2 : ply_type_bytes(list ? w[2] : w[1]);  // a list may be empty
+      elements.back().is_list.push_back(list);
+    }  // other lines are comments, as in Blender's files, which write them without the keyword
   }
   // Without one, assimp 5.2 searches for it forever.
   if (!ended)

@@ -90,6 +90,8 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
                                 "property float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n";
   std::ofstream(dir / "list.ply") << ply_faces << "0 0 0\n1 0 0\n0 1 0\n99990000 0 1 2\n";
   std::ofstream(dir / "short.ply") << ply_faces << "0 0 0\n1 0 0\n99990000 1 0\n";
+  // An element line without its count crashes assimp 5.2's reader.
+  std::ofstream(dir / "uncounted.ply") << "ply\nformat ascii 1.0\nelement v2ply\nend_header\n0\n";
   std::ofstream(dir / "huge.off") << "OFF\n1000000000 1 0\n0 0 0\n";
   // assimp reads a .off file without its magic too, and takes a leading '4' for the homogeneous flag.
   std::ofstream(dir / "bare.off") << "4 900000000 1 0\n0 0 0\n";
@@ -106,6 +108,7 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   expect_names(e_list, (dir / "list.ply").string());
   expect_names(e_list, "a list of 99990000 values in face");
   expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "short.ply"); }), "99990000 values");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "uncounted.ply"); }), "element NAME COUNT");
   const std::string e3 = test::bad_input_within_a_second([&] { import_surface(dir / "huge.off"); });
   expect_names(e3, (dir / "huge.off").string());
   expect_names(e3, "1000000000 vertices");
