@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <mutex>
 
@@ -57,6 +58,12 @@ struct TriangleScene::Impl {
   float* vertex_buffer = nullptr;  // owned by the geometry; #V by 3 floats (+ padding)
   int num_vertices = 0;
   double max_abs_coordinate = 0.0;  // bounds the float rounding of the stored vertices
+  const unsigned* indices = nullptr;  // owned by the geometry; #F by 3
+  // A small scene is searched triangle by triangle and builds its BVH only
+  // for a ray query: Embree's threaded commit costs more than the search.
+  bool direct = false;
+  std::atomic<bool> stale{false};  // the vertices moved since the last commit
+  std::mutex commit_mutex;
 };
 
 namespace {
@@ -69,6 +76,38 @@ double copy_vertices(const Points& vertices, float* buffer) {
       max_abs = std::max(max_abs, std::abs(vertices(i, k)));
     }
   return max_abs;
+}
+
+// Triangles a scene searches one by one instead of through its BVH: a rigid
+// box's 12, or a coarse primitive's few dozen.
+constexpr int kDirectTriangles = 64;
+
+// Commits the geometry and scene if the vertices moved since the last commit;
+// safe to call from several threads at once.
+void commit_if_moved(TriangleScene::Impl& impl) {
+  if (!impl.stale.load(std::memory_order_acquire)) return;
+  std::lock_guard<std::mutex> lock(impl.commit_mutex);
+  if (!impl.stale.load(std::memory_order_relaxed)) return;
+  rtcCommitGeometry(impl.geometry);
+  rtcCommitScene(impl.scene);
+  impl.device->throw_if_error("refitting a triangle scene");
+  impl.stale.store(false, std::memory_order_release);
+}
+
+// Squared distance, in float as Embree's culling is, from `p` to the bounding box of triangle `f`.
+float squared_distance_to_triangle_box(const TriangleScene::Impl& impl, int f, const float p[3]) {
+  float d2 = 0.0f;
+  for (int k = 0; k < 3; ++k) {
+    float lo = std::numeric_limits<float>::infinity(), hi = -lo;
+    for (int c = 0; c < 3; ++c) {
+      const float x = impl.vertex_buffer[3 * impl.indices[3 * f + c] + static_cast<unsigned>(k)];
+      lo = std::min(lo, x);
+      hi = std::max(hi, x);
+    }
+    const float out = std::max({lo - p[k], p[k] - hi, 0.0f});
+    d2 += out * out;
+  }
+  return d2;
 }
 
 struct NearOutput {
@@ -111,10 +150,11 @@ TriangleScene::TriangleScene(EmbreeDevice& device, const Points& vertices, const
   m_impl->max_abs_coordinate = copy_vertices(vertices, m_impl->vertex_buffer);
   for (Eigen::Index f = 0; f < triangles.rows(); ++f)
     for (int k = 0; k < 3; ++k) index_buffer[3 * f + k] = static_cast<unsigned>(triangles(f, k));
-  rtcCommitGeometry(m_impl->geometry);
+  m_impl->indices = index_buffer;
+  m_impl->direct = m_num_triangles <= kDirectTriangles;
   rtcAttachGeometryByID(m_impl->scene, m_impl->geometry, 0);
-  rtcCommitScene(m_impl->scene);
-  device.throw_if_error("building a triangle scene");
+  m_impl->stale = true;
+  if (!m_impl->direct) commit_if_moved(*m_impl);
 }
 
 TriangleScene::~TriangleScene() {
@@ -126,13 +166,13 @@ void TriangleScene::update_vertices(const Points& vertices) {
   RECOIL_CHECK(vertices.rows() == m_impl->num_vertices, "vertex count changed: " << vertices.rows());
   m_impl->max_abs_coordinate = copy_vertices(vertices, m_impl->vertex_buffer);
   rtcUpdateGeometryBuffer(m_impl->geometry, RTC_BUFFER_TYPE_VERTEX, 0);
-  rtcCommitGeometry(m_impl->geometry);
-  rtcCommitScene(m_impl->scene);
-  m_impl->device->throw_if_error("refitting a triangle scene");
+  m_impl->stale = true;
+  if (!m_impl->direct) commit_if_moved(*m_impl);
 }
 
 std::optional<RayHit> TriangleScene::first_hit(const Eigen::Vector3d& origin, const Eigen::Vector3d& direction,
                                                double t_min, double t_max) const {
+  commit_if_moved(*m_impl);
   RTCIntersectContext context;
   rtcInitIntersectContext(&context);
   RTCRayHit query{};
@@ -178,9 +218,16 @@ void TriangleScene::triangles_near(const Eigen::Vector3d& center, double radius,
   query.z = static_cast<float>(center.z());
   query.time = 0.0f;
   query.radius = static_cast<float>(padded);
+  const size_t first = out.size();
+  if (m_impl->direct) {
+    // In ascending order, each once: already as the BVH path leaves them.
+    const float p[3] = {query.x, query.y, query.z};
+    for (int f = 0; f < m_num_triangles; ++f)
+      if (squared_distance_to_triangle_box(*m_impl, f, p) <= query.radius * query.radius) out.push_back(f);
+    return;
+  }
   RTCPointQueryContext context;
   rtcInitPointQueryContext(&context);
-  const size_t first = out.size();
   NearOutput output{&out};
   rtcPointQuery(m_impl->scene, &query, &context, collect_primitive, &output);
   if (output.failed) throw Error(ErrorKind::internal, "out of memory in a point query");

@@ -18,6 +18,8 @@ struct RigidRun {
   double us_per_step = 0.0;
   long unconverged = 0;
   int steps = 0;
+  sim::Profile stage_ms;  // summed over the steps
+  long iterations = 0, contacts = 0;
 };
 
 // Runs 10 s and watches rigid body `watched` (its index among the bodies' stats).
@@ -30,6 +32,13 @@ RigidRun run_rigid(const sim::WorldDesc& desc, int watched) {
   for (int i = 0; i < out.steps; ++i) {
     const sim::StepReport r = world.step();
     total_ms += r.profile.total;
+    out.stage_ms.assemble += r.profile.assemble;
+    out.stage_ms.collide += r.profile.collide;
+    out.stage_ms.solve += r.profile.solve;
+    out.stage_ms.integrate += r.profile.integrate;
+    out.stage_ms.health += r.profile.health;
+    out.iterations += r.solver_iterations;
+    out.contacts += r.contacts;
     out.unconverged += !r.solver_converged;
     const Eigen::Vector3d c = world.stats()[static_cast<size_t>(watched)].center_of_mass;
     out.moved_mm = std::max(out.moved_mm, (c - start).norm() * 1e3);
@@ -58,6 +67,17 @@ void rigid_bench() {
     table.add_row({p.name, fixed(p.s1_mm, 3), fixed(p.s4_mm, 3), fixed(p.s1_us, 1), fixed(p.s4_us, 1),
                    fixed(s1.us_per_step / p.s1_us, 0) + "x", fixed(s4.us_per_step / p.s4_us, 0) + "x"});
   table.print();
+  BenchTable stages("recoil's step by stage, us/step", {"scene", "assemble", "collide", "solve", "integrate", "health",
+                                                        "total", "contact rows/step", "solver iterations/step"});
+  for (const auto& [name, run] : {std::pair<const char*, const RigidRun&>{"S1", s1}, {"S4", s4}}) {
+    const double to_us = 1e3 / run.steps;
+    stages.add_row({name, fixed(run.stage_ms.assemble * to_us, 1), fixed(run.stage_ms.collide * to_us, 1),
+                    fixed(run.stage_ms.solve * to_us, 1), fixed(run.stage_ms.integrate * to_us, 1),
+                    fixed(run.stage_ms.health * to_us, 1), fixed(run.us_per_step, 1),
+                    fixed(static_cast<double>(run.contacts) / run.steps, 1),
+                    fixed(static_cast<double>(run.iterations) / run.steps, 1)});
+  }
+  stages.print();
   std::cout << "recoil unconverged steps: S1 " << s1.unconverged << " of " << s1.steps << ", S4 " << s4.unconverged
             << " of " << s4.steps << "\n";
 }
