@@ -4,6 +4,7 @@
 #include <iostream>
 #include <string>
 
+#include "cli/build_info.h"
 #include "cli/commands.h"
 #include "cli/shell_quote.h"
 #include "cli/usage_error.h"
@@ -12,7 +13,7 @@
 int main(int argc, char** argv) {
   using namespace recoil;
   CLI::App app{"recoil: simulate elastic and rigid bodies colliding with friction, and render every frame to PNG."};
-  app.set_version_flag("--version", std::string("recoil ") + RECOIL_VERSION + " (" + RECOIL_GIT + ")");
+  app.set_version_flag("--version", std::string("recoil ") + RECOIL_VERSION + " (" + cli::build_commit() + ")");
   app.require_subcommand(1);
   app.fallthrough();  // global flags (-q, --log-json) may follow the subcommand
   app.footer("Run `recoil COMMAND --help` for a command's options and examples.");

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "cli/build_info.h"
 #include "cli/scene_runner.h"
 
 namespace recoil::cli {
@@ -13,7 +14,7 @@ RunReport::RunReport(const RunJob& job, const SceneDesc& scene) {
   const char* build_type = "debug";
 #endif
   m_head = {{"version", RECOIL_VERSION},
-            {"build", {{"git", RECOIL_GIT}, {"type", build_type}, {"compiler", __VERSION__}}},
+            {"build", {{"git", build_commit()}, {"type", build_type}, {"compiler", __VERSION__}}},
             {"command", job.command},
             {"scene", scene.name},
             {"scene_file", scene.file.string()},
