@@ -301,6 +301,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   if (out.is_plane()) {
     sim::PlaneDesc plane;
     plane.name = out.name;
+    plane.origin = {body.file(), body.pointer()};
     plane.point = body.vec3_in_or("point", Eigen::Vector3d::Zero(), kCoordinateRange);
     plane.normal = body.vec3_in_or("normal", Eigen::Vector3d::UnitY(), kCoordinateRange);
     if (!(plane.normal.norm() > 1e-12)) body.child("normal").fail("must not be zero");
@@ -327,6 +328,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   if (kind == sim::BodyKind::deformable) {
     sim::DeformableBodyDesc d;
     d.name = out.name;
+    d.origin = {body.file(), body.pointer()};
     d.transform = transform;
     d.static_friction = friction.static_coefficient;
     d.kinetic_friction = friction.kinetic_coefficient;
@@ -376,6 +378,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   } else {
     sim::RigidBodyDesc r;
     r.name = out.name;
+    r.origin = {body.file(), body.pointer()};
     r.kind = *kind;
     r.mesh = std::move(geometry.surface);
     r.transform = transform;

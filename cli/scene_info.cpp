@@ -23,12 +23,7 @@ double collision_below(const sim::Points& drawn, const sim::Points& collision, c
 
 int print_scene_info(const std::filesystem::path& file, bool as_json) {
   const SceneDesc scene = load_scene(file);
-  std::unique_ptr<sim::World> world;
-  try {
-    world = std::make_unique<sim::World>(scene.world);
-  } catch (const Error& e) {
-    throw scene_error(e, scene);
-  }
+  const auto world = std::make_unique<sim::World>(scene.world);  // its errors name the scene file and field
   // Heights are measured against gravity (+Y without it).
   const Eigen::Vector3d& g = scene.world.gravity;
   const Eigen::Vector3d up = g.norm() > 0.0 ? Eigen::Vector3d(-g.normalized()) : Eigen::Vector3d::UnitY();

@@ -61,11 +61,6 @@ std::string describe_run_warnings(const RunResult& result);
 // are written whole, run.json says "interrupted", then Interrupted is thrown.
 RunResult run_scene(const RunJob& job, const GlobalOptions& global);
 
-// World errors name "bodies/i", "rigid_bodies/i" or "planes/i" by index in
-// the WorldDesc lists; the user knows the scene's /bodies/j: the same error
-// naming the scene file and that pointer.
-Error scene_error(const Error& e, const SceneDesc& scene);
-
 // Steps at which frame k (1-based) is taken: round((k - 1) / (fps dt)).
 long frame_step(int frame, double fps, double dt);
 

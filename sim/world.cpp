@@ -49,18 +49,20 @@ const char* to_string(StepStatus status) {
 World::World(const WorldDesc& desc)
     : m_device(std::make_unique<EmbreeDevice>()), m_dt(desc.dt), m_gravity(desc.gravity), m_solver(desc.solver),
       m_contact(desc.contact) {
-  if (!(desc.dt > 0.0) || !std::isfinite(desc.dt)) throw bad_input("simulation/dt: must be > 0");
-  if (!desc.gravity.allFinite()) throw bad_input("simulation/gravity: must be finite");
+  // The scene file's keys under /simulation, where they have one.
+  const std::string simulation = desc.origin.where("simulation");
+  if (!(desc.dt > 0.0) || !std::isfinite(desc.dt)) throw bad_input(simulation + "/dt: must be > 0");
+  if (!desc.gravity.allFinite()) throw bad_input(simulation + "/gravity: must be finite");
   if (!(desc.solver.relative_tolerance > 0.0) || desc.solver.max_iterations < 1)
-    throw bad_input("simulation/solver: tolerance must be > 0 and max_iterations >= 1");
+    throw bad_input(simulation + ": the linear solver's tolerance must be > 0 and max_iterations >= 1");
   if (!(desc.contact.margin > 0.0) || !std::isfinite(desc.contact.margin))
-    throw bad_input("contact/margin: must be > 0");
-  if (desc.contact.num_threads < 1) throw bad_input("contact/num_threads: must be >= 1");
+    throw bad_input(simulation + "/contact/margin: must be > 0");
+  if (desc.contact.num_threads < 1) throw bad_input(simulation + ": contact num_threads must be >= 1");
   if (!(desc.contact.solver.tolerance > 0.0) || desc.contact.solver.max_iterations < 1)
-    throw bad_input("contact/solver: tolerance must be > 0 and max_iterations >= 1");
+    throw bad_input(simulation + "/solver: tolerance must be > 0 and max_iterations >= 1");
   int nodes = 0;
   for (size_t i = 0; i < desc.bodies.size(); ++i) {
-    const std::string where = "bodies/" + std::to_string(i);
+    const std::string where = desc.bodies[i].origin.where("bodies/" + std::to_string(i));
     check_friction(desc.bodies[i].static_friction, desc.bodies[i].kinetic_friction, where + "/friction");
     m_bodies.push_back(build_deformable_body(desc.bodies[i], *m_device, where, desc.contact.margin));
     m_bodies.back().node_offset = nodes;
@@ -76,7 +78,7 @@ World::World(const WorldDesc& desc)
       !desc.bodies.empty() || std::any_of(desc.rigid_bodies.begin(), desc.rigid_bodies.end(),
                                           [](const RigidBodyDesc& r) { return r.kind == BodyKind::rigid; });
   for (size_t i = 0; i < desc.rigid_bodies.size(); ++i) {
-    const std::string where = "rigid_bodies/" + std::to_string(i);
+    const std::string where = desc.rigid_bodies[i].origin.where("rigid_bodies/" + std::to_string(i));
     if (anything_collides) {
       m_rigid.push_back(build_rigid_body(desc.rigid_bodies[i], *m_device, where, desc.contact.margin));
     } else {
@@ -92,7 +94,7 @@ World::World(const WorldDesc& desc)
   }
   for (size_t i = 0; i < desc.planes.size(); ++i) {
     PlaneDesc p = desc.planes[i];
-    const std::string where = "planes/" + std::to_string(i);
+    const std::string where = p.origin.where("planes/" + std::to_string(i));
     if (!p.point.allFinite() || !p.normal.allFinite() || !(p.normal.norm() > 0.0))
       throw bad_input(where + ": point must be finite and normal non-zero");
     check_friction(p.friction.static_coefficient, p.friction.kinetic_coefficient, where + "/friction");

@@ -116,7 +116,8 @@ struct InitialOverlap {
 
 class World {
  public:
-  // Throws bad_input (naming "bodies/i/...") for invalid descriptions.
+  // Throws bad_input for invalid descriptions, naming each by its origin
+  // ("FILE: /bodies/3/...") or, built in code, by its list ("bodies/i/...").
   explicit World(const WorldDesc& desc);
   ~World();
   World(const World&) = delete;

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/body/desc_origin.h"
 #include "sim/fem/deformable_body.h"
 #include "sim/fem/pcg.h"
 #include "sim/geometry/tri_mesh.h"
@@ -17,6 +18,7 @@ namespace recoil::sim {
 // An infinite static plane; the render draws it as the ground.
 struct PlaneDesc {
   std::string name = "ground";
+  DescOrigin origin;
   Eigen::Vector3d point = Eigen::Vector3d::Zero();    // m
   Eigen::Vector3d normal = Eigen::Vector3d::UnitY();  // outside is normal.(x - point) > 0; normalised on use
   FrictionDesc friction;
@@ -30,6 +32,7 @@ struct ContactSettings {
 };
 
 struct WorldDesc {
+  DescOrigin origin;  // of the simulation settings ("/simulation" in a scene file)
   double dt = 0.004;                                           // s
   Eigen::Vector3d gravity = Eigen::Vector3d(0.0, -9.81, 0.0);  // m/s^2
   PcgSettings solver;            // the linear solve of a step without active contacts

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "sim/body/desc_origin.h"
 #include "sim/collision/collision_proxy.h"
 #include "sim/fem/element.h"
 #include "sim/fem/material.h"
@@ -30,6 +31,7 @@ struct PinBox {
 
 struct DeformableBodyDesc {
   std::string name = "body";
+  DescOrigin origin;
   TriMesh mesh;          // surface in local coordinates; may be empty when tets are given
   TetMesh tets;          // conforming tets in local coordinates; empty: tetrahedralize `mesh`
   int resolution = kDefaultResolution;  // lattice cells along the longest side when tetrahedralizing

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "sim/body/body_kind.h"
+#include "sim/body/desc_origin.h"
 #include "sim/collision/collision_proxy.h"
 #include "sim/geometry/transform.h"
 #include "sim/geometry/tri_mesh.h"
@@ -24,6 +25,7 @@ struct FrictionDesc {
 // `fixed` one (scene type "static") never moves.
 struct RigidBodyDesc {
   std::string name = "rigid";
+  DescOrigin origin;
   BodyKind kind = BodyKind::rigid;  // rigid, kinematic or fixed; never deformable
   TriMesh mesh;                 // surface in local coordinates
   Transform transform;          // local -> world at time 0

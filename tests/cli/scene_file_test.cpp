@@ -13,6 +13,7 @@
 #include "cli/scene_parser.h"
 #include "cli/scene_runner.h"
 #include "core/error.h"
+#include "sim/world.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -96,19 +97,33 @@ TEST(SceneFile, NearMissSuggestions) {
   EXPECT_EQ(cli::near_miss("banana", {"friction", "transform"}), "");
 }
 
-TEST(SceneFile, WorldErrorsAreTranslatedToTheScenePointer) {
+TEST(SceneFile, WorldErrorsNameTheSceneFileAndPointer) {
+  // World's own lists order bodies by kind; its errors name the scene's /bodies/j.
   const fs::path dir = scratch_dir("scene_world_error");
   write_file(dir / "w.json", R"({"recoil": 1, "bodies": [
     {"type": "plane"}, {"type": "rigid", "primitive": {"sphere": 0.1}},
     {"type": "deformable", "primitive": {"sphere": 0.1}}, {"type": "deformable", "primitive": {"sphere": 0.1}}]})");
-  const cli::SceneDesc scene = cli::load_scene(dir / "w.json");
   const std::string file = (dir / "w.json").string();
-  EXPECT_EQ(std::string(cli::scene_error(bad_input("bodies/1/material: bad"), scene).what()),
-            file + ": /bodies/3/material: bad");
-  EXPECT_EQ(std::string(cli::scene_error(bad_input("rigid_bodies/0: not closed"), scene).what()),
-            file + ": /bodies/1: not closed");
-  EXPECT_EQ(std::string(cli::scene_error(bad_input("simulation/dt: must be > 0"), scene).what()),
-            file + ": /simulation/dt: must be > 0");
+  cli::SceneDesc scene = cli::load_scene(dir / "w.json");
+  scene.world.bodies[1].material.poisson_ratio = 0.7;  // past what the parser lets through
+  scene.world.rigid_bodies[0].density = -1.0;
+  scene.world.planes[0].normal.setZero();
+  scene.world.dt = 0.0;
+  const auto error_of = [](const sim::WorldDesc& desc) {
+    try {
+      sim::World world(desc);
+    } catch (const Error& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_EQ(error_of(scene.world), file + ": /simulation/dt: must be > 0");
+  scene.world.dt = 0.01;
+  EXPECT_EQ(error_of(scene.world).rfind(file + ": /bodies/3/material/poisson_ratio: ", 0), 0u) << error_of(scene.world);
+  scene.world.bodies[1].material.poisson_ratio = 0.3;
+  EXPECT_EQ(error_of(scene.world), file + ": /bodies/1/density: must be > 0");
+  scene.world.rigid_bodies[0].density = 1000.0;
+  EXPECT_EQ(error_of(scene.world), file + ": /bodies/0: point must be finite and normal non-zero");
 }
 
 TEST(FrameSpec, RangesStepsAndLists) {
