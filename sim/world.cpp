@@ -102,7 +102,7 @@ World::World(const WorldDesc& desc)
     m_planes.push_back(std::move(p));
   }
 
-  m_x.resize(3 * nodes);
+  m_x.setZero(3 * nodes);
   m_v.resize(3 * nodes);
   m_fixed.assign(static_cast<size_t>(nodes), 0);
   std::vector<std::pair<int, int>> pairs;
@@ -123,7 +123,6 @@ World::World(const WorldDesc& desc)
     m_v.segment<3>(3 * body.linear_node) = body.velocity;
     m_v.segment<3>(3 * body.linear_node + 3) = body.angular_velocity;
   }
-  sync_rigid_positions();
   m_A = BlockSparseMatrix(nodes, std::move(pairs));  // rigid nodes: diagonal blocks only
   for (auto& body : m_bodies) index_blocks(body, m_A);
   m_detector = std::make_unique<CollisionDetector>(CollisionSettings{m_contact.margin, m_contact.num_threads});
@@ -134,30 +133,49 @@ World::World(const WorldDesc& desc)
 
 World::~World() = default;
 
-void World::sync_rigid_positions() {
+Eigen::VectorXd World::positions() const {
+  Eigen::VectorXd x = m_x;
   for (int r : m_dynamic) {
     const RigidBody& body = m_rigid[static_cast<size_t>(r)];
-    m_x.segment<3>(3 * body.linear_node) = body.pose.center;
-    m_x.segment<3>(3 * body.linear_node + 3) = rotation_vector(body.pose.orientation);
+    x.segment<3>(3 * body.linear_node) = body.pose.center;
+    x.segment<3>(3 * body.linear_node + 3) = rotation_vector(body.pose.orientation);
   }
+  return x;
 }
 
+World::DynamicBody World::dynamic_body(int i) const {
+  const size_t k = static_cast<size_t>(i);
+  DynamicBody out;
+  if (k < m_bodies.size()) {
+    out.deformable = &m_bodies[k];
+    out.first_node = out.deformable->node_offset;
+    out.num_nodes = out.deformable->num_nodes;
+  } else {
+    out.rigid = &m_rigid[static_cast<size_t>(m_dynamic[k - m_bodies.size()])];
+    out.first_node = out.rigid->linear_node;
+    out.num_nodes = 2;
+  }
+  return out;
+}
+
+const std::string& World::DynamicBody::name() const { return deformable ? deformable->name : rigid->name; }
+
 void World::reset_energy_reference() {
-  const size_t count = m_bodies.size() + m_dynamic.size();
+  const size_t count = static_cast<size_t>(num_dynamic_bodies());
   m_energy0.assign(count, 0.0);
   m_energy_scale.assign(count, 0.0);
   for (size_t i = 0; i < count; ++i) {
+    const DynamicBody body = dynamic_body(static_cast<int>(i));
     double elastic = 0.0, mass = 0.0;
     Aabb box;
-    if (i < m_bodies.size()) {
-      elastic = elastic_state(m_bodies[i], m_x, /*with_energy=*/true).energy;
+    if (body.deformable) {
+      elastic = elastic_state(*body.deformable, m_x, /*with_energy=*/true).energy;
       m_elastic[i] = elastic;
-      box = bounding_box(m_bodies[i].surface);
-      mass = m_bodies[i].mass.sum();
+      box = bounding_box(body.deformable->surface);
+      mass = body.deformable->mass.sum();
     } else {
-      const RigidBody& body = m_rigid[static_cast<size_t>(m_dynamic[i - m_bodies.size()])];
-      box = bounds(body.local);
-      mass = body.mass;
+      box = bounds(body.rigid->local);
+      mass = body.rigid->mass;
     }
     m_energy0[i] = total_energy(static_cast<int>(i), elastic);
     const double size = box.valid() ? box.extent().norm() : 1.0;
@@ -168,13 +186,14 @@ void World::reset_energy_reference() {
 }
 
 double World::total_energy(int i, double elastic) const {
-  if (static_cast<size_t>(i) >= m_bodies.size()) {
-    const RigidBody& body = m_rigid[static_cast<size_t>(m_dynamic[static_cast<size_t>(i) - m_bodies.size()])];
+  const DynamicBody dynamic = dynamic_body(i);
+  if (dynamic.rigid) {
+    const RigidBody& body = *dynamic.rigid;
     const Eigen::Vector3d v = m_v.segment<3>(3 * body.linear_node), w = m_v.segment<3>(3 * body.linear_node + 3);
     return 0.5 * body.mass * v.squaredNorm() + 0.5 * w.dot(body.world_inertia() * w) -
            body.mass * m_gravity.dot(body.pose.center);
   }
-  const DeformableBody& body = m_bodies[static_cast<size_t>(i)];
+  const DeformableBody& body = *dynamic.deformable;
   double e = elastic;
   for (int n = 0; n < body.num_nodes; ++n) {
     const int g = body.node_offset + n;
@@ -201,27 +220,26 @@ void World::check_health(StepReport& report) {
       report.body = body;
     }
   };
-  for (size_t i = 0; i < m_bodies.size() + m_dynamic.size(); ++i) {
-    const bool deformable = i < m_bodies.size();
-    const int offset = deformable ? m_bodies[i].node_offset
-                                  : m_rigid[static_cast<size_t>(m_dynamic[i - m_bodies.size()])].linear_node;
-    const int count = deformable ? m_bodies[i].num_nodes : 2;
-    const std::string& name =
-        deformable ? m_bodies[i].name : m_rigid[static_cast<size_t>(m_dynamic[i - m_bodies.size()])].name;
-    if (!m_x.segment(3 * offset, 3 * count).allFinite() || !m_v.segment(3 * offset, 3 * count).allFinite()) {
+  for (int i = 0; i < num_dynamic_bodies(); ++i) {
+    const size_t k = static_cast<size_t>(i);
+    const DynamicBody body = dynamic_body(i);
+    const std::string& name = body.name();
+    const bool finite_pose =
+        body.deformable ? m_x.segment(3 * body.first_node, 3 * body.num_nodes).allFinite() : body.rigid->pose.finite();
+    if (!finite_pose || !m_v.segment(3 * body.first_node, 3 * body.num_nodes).allFinite()) {
       raise(StepStatus::nan, name);
       continue;
     }
     double elastic = 0.0;
-    if (deformable) {
-      const ElasticState s = elastic_state(m_bodies[i], m_x, /*with_energy=*/false);
+    if (body.deformable) {
+      const ElasticState s = elastic_state(*body.deformable, m_x, /*with_energy=*/false);
       report.inverted_tets += s.inverted;
       if (s.inverted > 0) raise(StepStatus::inverted, name);
       // The elastic part lags one step (it comes from assembly): a blow-up
       // shows in the kinetic energy first anyway.
-      elastic = m_elastic[i];
+      elastic = m_elastic[k];
     }
-    if (total_energy(static_cast<int>(i), elastic) - m_energy0[i] > kBlowupFactor * m_energy_scale[i])
+    if (total_energy(i, elastic) - m_energy0[k] > kBlowupFactor * m_energy_scale[k])
       raise(StepStatus::energy_blowup, name);
   }
   if (report.status == StepStatus::nan) ++m_counters.nan_steps;
@@ -238,6 +256,7 @@ void World::set_state(const Eigen::VectorXd& positions, const Eigen::VectorXd& v
     RigidBody& body = m_rigid[static_cast<size_t>(r)];
     body.pose.center = m_x.segment<3>(3 * body.linear_node);
     body.pose.orientation = from_rotation_vector(m_x.segment<3>(3 * body.linear_node + 3));
+    m_x.segment<6>(3 * body.linear_node).setZero();  // the pose is the body's alone
     body.velocity = m_v.segment<3>(3 * body.linear_node);
     body.angular_velocity = m_v.segment<3>(3 * body.linear_node + 3);
   }

@@ -6,10 +6,11 @@
 //
 // DoF layout: one global vector of 3 entries per node for positions and
 // velocities. Deformable bodies own node ranges first, in description order;
-// then each dynamic rigid body owns two nodes: its linear velocity (position
-// entry: the centre of mass, m) and its angular velocity (position entry: the
-// rotation vector angle * axis of its orientation, rad). Kinematic and fixed
-// bodies and planes have no DoFs.
+// then each dynamic rigid body owns two nodes: its linear and its angular
+// velocity. A rigid body's pose lives in its RigidBody only (the position
+// entries of its nodes are unused); positions() and set_state() give it as
+// the centre of mass (m) and the rotation vector angle * axis (rad).
+// Kinematic and fixed bodies and planes have no DoFs.
 //
 // Collide: every mesh body is a collision surface (deformable: the embedded
 // surface; rigid, kinematic, fixed: the transformed mesh), moving from its
@@ -141,8 +142,8 @@ class World {
   // Rigid, kinematic and fixed bodies, in description order.
   int num_rigid_bodies() const { return static_cast<int>(m_rigid.size()); }
   const RigidBody& rigid_body(int i) const { return m_rigid[static_cast<size_t>(i)]; }
-  // Global DoF vectors: 3 per node, layout above.
-  const Eigen::VectorXd& positions() const { return m_x; }
+  // Global DoF vectors: 3 per node, layout above (positions() fills in the rigid poses).
+  Eigen::VectorXd positions() const;
   const Eigen::VectorXd& velocities() const { return m_v; }
   // Replaces positions and velocities (3 per node, same layout; rigid bodies
   // take centre, rotation vector, velocity and angular velocity), e.g. to
@@ -171,12 +172,20 @@ class World {
   const std::string& surface_body_name(int s) const;
   void integrate();
   void check_health(StepReport& report);
-  // Kinetic + elastic + gravitational energy of dynamic body i (deformable
-  // bodies, then dynamic rigid ones), J, with the given elastic part.
+  // A body with degrees of freedom: the deformable bodies, then the dynamic
+  // rigid ones (the order of stats()); exactly one of the pointers is set.
+  struct DynamicBody {
+    const DeformableBody* deformable = nullptr;
+    const RigidBody* rigid = nullptr;
+    int first_node = 0;  // into the global node list (3 DoFs per node)
+    int num_nodes = 0;   // a rigid body's two: its centre and its rotation vector
+    const std::string& name() const;
+  };
+  int num_dynamic_bodies() const { return static_cast<int>(m_bodies.size() + m_dynamic.size()); }
+  DynamicBody dynamic_body(int i) const;
+  // Kinetic + elastic + gravitational energy of dynamic body i, J, with the given elastic part.
   double total_energy(int i, double elastic) const;
   void reset_energy_reference();
-  // Copies the dynamic rigid bodies' poses into m_x and back.
-  void sync_rigid_positions();
 
   std::unique_ptr<EmbreeDevice> m_device;
   std::unique_ptr<CollisionDetector> m_detector;

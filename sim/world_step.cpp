@@ -1,5 +1,6 @@
 // World::step and its stages: assemble -> collide -> solve -> integrate -> health.
 #include <Eigen/Cholesky>
+#include <algorithm>
 #include <chrono>
 
 #include "core/check.h"
@@ -182,7 +183,8 @@ const std::string& World::surface_body_name(int s) const {
 void World::collide_and_solve(StepReport& report) {
   // A state that is already broken is reported by the health stage; the
   // collision search needs finite positions.
-  if (!m_x.allFinite() || !m_v.allFinite() || !m_dv.allFinite()) {
+  if (!m_x.allFinite() || !m_v.allFinite() || !m_dv.allFinite() ||
+      !std::all_of(m_rigid.begin(), m_rigid.end(), [](const RigidBody& body) { return body.pose.finite(); })) {
     m_memory.clear();
     return;
   }
@@ -259,7 +261,6 @@ void World::integrate() {
     body.velocity = m_v.segment<3>(3 * n);
     body.angular_velocity = m_v.segment<3>(3 * n + 3);
   }
-  sync_rigid_positions();
 }
 
 }  // namespace recoil::sim

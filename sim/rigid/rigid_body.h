@@ -25,6 +25,8 @@ namespace recoil::sim {
 struct RigidPose {
   Eigen::Vector3d center = Eigen::Vector3d::Zero();              // m, world
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body -> world, unit
+
+  bool finite() const { return center.allFinite() && orientation.coeffs().allFinite(); }
 };
 
 struct RigidBody {
