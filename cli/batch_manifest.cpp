@@ -70,8 +70,7 @@ BatchItem to_item(const JsonCursor& entry, const nlohmann::json& defaults, const
   if (!entry.value().is_object()) entry.fail("expected an object with \"scene\" or \"mesh\", got " +
                                              std::string(entry.value().type_name()));
   for (const auto& [key, value] : entry.value().items()) merged[key] = value;
-  nlohmann::json unused;
-  const JsonCursor item(merged, unused, entry.file(), entry.pointer());
+  const JsonCursor item(merged, entry.file(), entry.pointer());
   const bool has_scene = merged.contains("scene"), has_mesh = merged.contains("mesh");
   if (has_scene == has_mesh) item.fail("an item names exactly one of \"scene\" or \"mesh\"");
 
@@ -185,14 +184,12 @@ std::vector<BatchItem> load_batch_items(const fs::path& source, const nlohmann::
     if (meshes.empty()) throw bad_input(source.string() + ": no mesh files in this folder (nothing for batch to do)");
     for (size_t i = 0; i < meshes.size(); ++i) {
       const nlohmann::json entry = {{"mesh", meshes[i].filename().string()}};
-      nlohmann::json unused;
-      items.push_back(to_item(JsonCursor(entry, unused, meshes[i].string()), defaults, source, static_cast<int>(i)));
+      items.push_back(to_item(JsonCursor(entry, meshes[i].string()), defaults, source, static_cast<int>(i)));
     }
   } else {
     const std::vector<std::uint8_t> bytes = read_file_bytes(source);
     const nlohmann::json document = parse_json_text(std::string(bytes.begin(), bytes.end()), source.string());
-    nlohmann::json unused;
-    const JsonCursor list(document, unused, source.string());
+    const JsonCursor list(document, source.string());
     if (!document.is_array()) list.fail("a batch manifest is a JSON list of items, got " + std::string(document.type_name()));
     if (document.empty()) list.fail("the manifest lists no items");
     const std::vector<JsonCursor> entries = list.elements();

@@ -176,8 +176,8 @@ std::string json_type_name(const nlohmann::json& value) {
   }
 }
 
-JsonCursor::JsonCursor(const nlohmann::json& in, nlohmann::json& out, std::string file, std::string pointer)
-    : m_in(&in), m_out(&out), m_file(std::move(file)), m_pointer(std::move(pointer)) {}
+JsonCursor::JsonCursor(const nlohmann::json& in, std::string file, std::string pointer)
+    : m_in(&in), m_file(std::move(file)), m_pointer(std::move(pointer)) {}
 
 void JsonCursor::fail(const std::string& message) const {
   throw bad_input(m_file + ": " + (m_pointer.empty() ? "/" : m_pointer) + ": " + message);
@@ -192,7 +192,6 @@ void JsonCursor::type_error(const char* expected) const {
 
 void JsonCursor::expect_object(const std::vector<std::string>& allowed) const {
   if (!m_in->is_object()) type_error("an object");
-  if (!m_out->is_object()) *m_out = nlohmann::json::object();
   for (const auto& [key, value] : m_in->items()) {
     if (std::find(allowed.begin(), allowed.end(), key) != allowed.end()) continue;
     const std::string suggestion = near_miss(key, allowed);
@@ -202,7 +201,7 @@ void JsonCursor::expect_object(const std::vector<std::string>& allowed) const {
       message += "; expected one of";
       for (const std::string& a : allowed) message += " " + a;
     }
-    JsonCursor(value, *m_out, m_file, m_pointer + "/" + escape_pointer_token(key)).fail(message);
+    JsonCursor(value, m_file, m_pointer + "/" + escape_pointer_token(key)).fail(message);
   }
 }
 
@@ -210,28 +209,23 @@ JsonCursor JsonCursor::child(const std::string& key) const {
   if (!m_in->is_object()) type_error("an object");
   const std::string pointer = m_pointer + "/" + escape_pointer_token(key);
   const auto it = m_in->find(key);
-  if (it == m_in->end()) JsonCursor(*m_in, *m_out, m_file, pointer).fail("is required");
-  if (!m_out->is_object()) *m_out = nlohmann::json::object();
-  return JsonCursor(*it, (*m_out)[key], m_file, pointer);
+  if (it == m_in->end()) JsonCursor(*m_in, m_file, pointer).fail("is required");
+  return JsonCursor(*it, m_file, pointer);
 }
 
 JsonCursor JsonCursor::child_or_empty(const std::string& key) const {
   if (has(key)) return child(key);
   static const nlohmann::json empty = nlohmann::json::object();
-  if (!m_out->is_object()) *m_out = nlohmann::json::object();
-  return JsonCursor(empty, (*m_out)[key], m_file, m_pointer + "/" + escape_pointer_token(key));
+  return JsonCursor(empty, m_file, m_pointer + "/" + escape_pointer_token(key));
 }
 
 std::vector<JsonCursor> JsonCursor::elements(std::optional<size_t> size) const {
   if (!m_in->is_array()) type_error("an array");
   if (size && m_in->size() != *size)
     fail("expected " + std::to_string(*size) + " elements, got " + std::to_string(m_in->size()));
-  // Sized up front: the children keep pointers into it.
-  *m_out = nlohmann::json::array();
-  for (size_t i = 0; i < m_in->size(); ++i) m_out->push_back(nullptr);
   std::vector<JsonCursor> out;
   for (size_t i = 0; i < m_in->size(); ++i)
-    out.emplace_back((*m_in)[i], (*m_out)[i], m_file, m_pointer + "/" + std::to_string(i));
+    out.emplace_back((*m_in)[i], m_file, m_pointer + "/" + std::to_string(i));
   return out;
 }
 
@@ -239,7 +233,6 @@ double JsonCursor::number() const {
   if (!m_in->is_number()) type_error("a number");
   const double x = m_in->get<double>();
   if (!std::isfinite(x)) fail("must be finite");
-  *m_out = *m_in;
   return x;
 }
 
@@ -248,19 +241,16 @@ int JsonCursor::integer_in(int lo, int hi) const {
   // Compared as a double, exact for every int, so no 64-bit value wraps.
   const double x = m_in->get<double>();
   if (x < lo || x > hi) fail("must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], got " + m_in->dump());
-  *m_out = *m_in;
   return static_cast<int>(x);
 }
 
 bool JsonCursor::boolean() const {
   if (!m_in->is_boolean()) type_error("true or false");
-  *m_out = *m_in;
   return m_in->get<bool>();
 }
 
 std::string JsonCursor::string() const {
   if (!m_in->is_string()) type_error("a string");
-  *m_out = *m_in;
   return m_in->get<std::string>();
 }
 
@@ -281,32 +271,27 @@ double JsonCursor::number_in(const Range& range) const {
 
 double JsonCursor::number_in_or(const std::string& key, double fallback, const Range& range) const {
   if (has(key)) return child(key).number_in(range);
-  (*m_out)[key] = fallback;
   return fallback;
 }
 
 int JsonCursor::integer_in_or(const std::string& key, int fallback, int lo, int hi) const {
   if (has(key)) return child(key).integer_in(lo, hi);
-  (*m_out)[key] = fallback;
   return fallback;
 }
 
 bool JsonCursor::boolean_or(const std::string& key, bool fallback) const {
   if (has(key)) return child(key).boolean();
-  (*m_out)[key] = fallback;
   return fallback;
 }
 
 std::string JsonCursor::string_or(const std::string& key, const std::string& fallback) const {
   if (has(key)) return child(key).string();
-  (*m_out)[key] = fallback;
   return fallback;
 }
 
 Eigen::Vector3d JsonCursor::vec3_in_or(const std::string& key, const Eigen::Vector3d& fallback,
                                        const Range& component) const {
   if (has(key)) return child(key).vec3_in(component);
-  (*m_out)[key] = {fallback.x(), fallback.y(), fallback.z()};
   return fallback;
 }
 

@@ -1,9 +1,7 @@
 #pragma once
 // JsonCursor: one value inside a parsed JSON document together with its JSON
 // pointer, for validating scene files (pbrt style: every error names the file
-// and the field). While it reads, it also writes the value it used (defaults
-// included) into a parallel "resolved" document at the same pointer, which
-// becomes DIR/scene.json: the fully resolved scene.
+// and the field).
 #include <Eigen/Core>
 #include <cmath>
 #include <initializer_list>
@@ -30,8 +28,8 @@ std::string near_miss(std::string_view word, const std::vector<std::string>& can
 
 class JsonCursor {
  public:
-  // `out` receives what was read; it must outlive the cursor and every child.
-  JsonCursor(const nlohmann::json& in, nlohmann::json& out, std::string file, std::string pointer = "");
+  // `in` must outlive the cursor and every child.
+  JsonCursor(const nlohmann::json& in, std::string file, std::string pointer = "");
 
   const nlohmann::json& value() const { return *m_in; }
   const std::string& pointer() const { return m_pointer; }
@@ -49,12 +47,12 @@ class JsonCursor {
   // The member `key` (which must exist; fails "is required" otherwise).
   JsonCursor child(const std::string& key) const;
   // The member `key`, or an empty object standing in for it when absent (so
-  // that its defaults are recorded in the resolved document).
+  // that its members' defaults apply).
   JsonCursor child_or_empty(const std::string& key) const;
   // An array's elements (fails unless an array, optionally of `size` elements).
   std::vector<JsonCursor> elements(std::optional<size_t> size = std::nullopt) const;
 
-  // Leaves: type-checked, range-checked, copied to the resolved document.
+  // Leaves: type-checked and range-checked.
   // Every number a scene gives has a stated range (cli/scene_limits.h).
   bool boolean() const;
   std::string string() const;
@@ -63,23 +61,18 @@ class JsonCursor {
   // Each of the three components in `component`.
   Eigen::Vector3d vec3_in(const Range& component) const;
 
-  // Optional members: the default is used and recorded when absent.
+  // Optional members: the default when absent.
   double number_in_or(const std::string& key, double fallback, const Range& range) const;
   int integer_in_or(const std::string& key, int fallback, int lo, int hi) const;
   bool boolean_or(const std::string& key, bool fallback) const;
   std::string string_or(const std::string& key, const std::string& fallback) const;
   Eigen::Vector3d vec3_in_or(const std::string& key, const Eigen::Vector3d& fallback, const Range& component) const;
 
-  // Records `value` in the resolved document in place of what was read
-  // (e.g. an absolute path for a relative one).
-  void resolve_as(nlohmann::json value) const { *m_out = std::move(value); }
-
  private:
   [[noreturn]] void type_error(const char* expected) const;
   double number() const;  // finite, not yet range-checked
 
   const nlohmann::json* m_in;
-  nlohmann::json* m_out;
   std::string m_file;
   std::string m_pointer;
 };

@@ -67,13 +67,11 @@ render::PngOptions to_png_options(const RenderOptions& options) {
   return png;
 }
 
-std::string palette_hex(int index) {
+render::Rgb palette_color(int index) {
   // Warm clay first (the hero body), then muted, well-separated hues.
   static const char* const palette[] = {"#d9a066", "#609ec7", "#91bc75", "#d47578",
                                         "#a68fc9", "#e2c668", "#69bbb4", "#c799b8"};
-  return palette[index % (sizeof(palette) / sizeof(palette[0]))];
+  return parse_color(palette[index % (sizeof(palette) / sizeof(palette[0]))], "palette");
 }
-
-render::Rgb palette_color(int index) { return parse_color(palette_hex(index), "palette"); }
 
 }  // namespace recoil::cli

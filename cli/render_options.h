@@ -36,7 +36,6 @@ render::Rgb parse_color(const std::string& text, const std::string& what);
 
 // The colour of the i-th body when none is given: a soft, distinguishable
 // palette of 8-bit colours, so a scene file records them exactly.
-std::string palette_hex(int index);
-render::Rgb palette_color(int index);  // palette_hex(index) parsed
+render::Rgb palette_color(int index);
 
 }  // namespace recoil::cli

@@ -7,6 +7,7 @@
 #include "cli/frame_spec.h"
 #include "cli/output_dir.h"
 #include "cli/scene_runner.h"
+#include "cli/scene_writer.h"
 #include "core/error.h"
 
 namespace recoil::cli {
@@ -16,40 +17,22 @@ bool given(const RunOptions& options, const char* name) {
   return options.command && options.command->count(name) > 0;
 }
 
+// The overrides change the scene itself, so that what is drawn and the
+// scene.json written beside the frames say the same thing.
 void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
-  nlohmann::json& r = scene.resolved["render"];
-  if (given(o, "--resolution")) {
-    scene.render.resolution = o.render.resolution;
-    const render::RenderSettings s = to_render_settings(scene.render);  // validates
-    r["resolution"] = {s.width, s.height};
-  }
-  if (given(o, "--fps")) r["fps"] = scene.render.fps = o.render.fps;
-  if (given(o, "--msaa")) r["msaa"] = scene.render.msaa = o.render.msaa;
-  if (given(o, "--no-shadows")) {
-    scene.render.no_shadows = true;
-    r["shadows"] = false;
-  }
-  if (given(o, "--background")) r["background"] = scene.render.background = o.render.background;
-  if (given(o, "--wireframe")) r["wireframe"] = scene.render.wireframe = true;
-  if (given(o, "--png-level")) r["png_level"] = scene.render.png_level = o.render.png_level;
-  // --color and --camera-distance change the scene itself, so that what is
-  // drawn and the scene.json written beside the frames say the same thing.
+  if (given(o, "--resolution")) scene.render.resolution = o.render.resolution;
+  if (given(o, "--fps")) scene.render.fps = o.render.fps;
+  if (given(o, "--msaa")) scene.render.msaa = o.render.msaa;
+  if (given(o, "--no-shadows")) scene.render.no_shadows = true;
+  if (given(o, "--background")) scene.render.background = o.render.background;
+  if (given(o, "--wireframe")) scene.render.wireframe = true;
+  if (given(o, "--png-level")) scene.render.png_level = o.render.png_level;
   if (given(o, "--color")) {
     const render::Rgb color = parse_color(o.render.color, "--color");
-    for (size_t i = 0; i < scene.bodies.size(); ++i) {
-      if (scene.bodies[i].is_plane()) continue;
-      scene.bodies[i].color = color;
-      scene.resolved["bodies"][i]["color"] = o.render.color;
-    }
+    for (SceneBody& body : scene.bodies)
+      if (!body.is_plane()) body.color = color;
   }
-  if (given(o, "--camera-distance")) {
-    scene.camera.distance = o.render.camera_distance;
-    // 0 means "fit the scene", which a scene file says by leaving the key out.
-    if (scene.camera.distance > 0.0)
-      r["camera"]["distance"] = scene.camera.distance;
-    else if (r.contains("camera"))
-      r["camera"].erase("distance");
-  }
+  if (given(o, "--camera-distance")) scene.camera.distance = o.render.camera_distance;  // 0: fit the scene
   to_render_settings(scene.render);  // validates the combination (fps, resolution)
 }
 
@@ -90,12 +73,11 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
     scene.world.contact.solver.method = options.solver == "pgs"        ? sim::SolverMethod::pgs
                                         : options.solver == "cr-plain" ? sim::SolverMethod::cr_plain
                                                                        : sim::SolverMethod::cr;
-    scene.resolved["simulation"]["solver"]["method"] = options.solver;
   }
   const unsigned cores = std::thread::hardware_concurrency();
   scene.world.contact.num_threads = options.threads > 0 ? options.threads : static_cast<int>(std::max(1u, cores));
   apply_render_overrides(options, scene);
-  if (!options.save_scene.empty()) write_text_atomically(options.save_scene, scene.resolved.dump(2) + "\n");
+  if (!options.save_scene.empty()) write_text_atomically(options.save_scene, resolved_scene(scene).dump(2) + "\n");
   if (!options.frames.empty()) job.frames = parse_frame_spec(options.frames);
   job.output_dir = options.output.empty() ? default_output_dir(scene.name) : std::filesystem::path(options.output);
   job.stats_path = options.stats;

@@ -96,8 +96,6 @@ sim::Transform parse_transform(const JsonCursor& c) {
         if (!kScaleRange.contains(std::abs(t.scale[k])))
           s.fail("each component's magnitude must be " + kScaleRange.describe());
     }
-  } else {
-    c.number_in_or("scale", 1.0, kScaleRange);
   }
   return t;
 }
@@ -140,21 +138,18 @@ sim::TriMesh parse_primitive(const JsonCursor& c, std::optional<Eigen::Vector3d>
   return sim::make_torus(major, minor);
 }
 
-bool is_tet_file(const fs::path& path) {
-  const std::string ext = path.extension().string();
-  return ext == ".msh" || ext == ".node" || ext == ".ele";
-}
-
-// A file named by the scene: resolved against its folder, recorded absolute.
+// A file named by the scene: resolved against its folder.
 fs::path resolve_file(const JsonCursor& c, const fs::path& base_dir) {
   const std::string text = c.string();
   if (text.empty()) c.fail("empty file name");
   const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (base_dir / text).lexically_normal();
   std::error_code ec;
   if (!fs::is_regular_file(path, ec)) c.fail("file not found: " + path.string());
-  c.resolve_as(fs::absolute(path).lexically_normal().string());
   return path;
 }
+
+// How the resolved scene names a file: absolute, so it reruns from anywhere.
+fs::path absolute_path(const fs::path& path) { return fs::absolute(path).lexically_normal(); }
 
 // Loads a geometry file, turning the reader's error into one that names the field.
 template <typename F>
@@ -167,6 +162,8 @@ auto load_geometry(const JsonCursor& c, F&& read) {
 }
 
 struct Geometry {
+  fs::path file;                        // the mesh file, absolute; empty for a primitive
+  nlohmann::json primitive;             // the validated primitive object; null for a mesh file
   sim::TriMesh surface;
   sim::TetMesh tets;                    // when the mesh file is tetrahedral
   std::optional<Eigen::Vector3d> box;   // a box primitive's edge lengths, m
@@ -191,7 +188,11 @@ struct BodiesSoFar {
 Geometry read_mesh_file(const JsonCursor& c, const fs::path& base_dir, MeshFiles& files) {
   Geometry g;
   const fs::path path = resolve_file(c, base_dir).lexically_normal();
-  if (const auto known = files.find(path); known != files.end()) return known->second;
+  g.file = absolute_path(path);
+  if (auto known = files.find(path); known != files.end()) {
+    known->second.file = g.file;
+    return known->second;
+  }
   if (is_tet_file(path)) {
     g.tets = load_geometry(c, [&] { return sim::read_tet_file(path); });
     if (g.tets.empty()) c.fail("holds no tetrahedra: " + path.string());
@@ -205,18 +206,13 @@ Geometry read_mesh_file(const JsonCursor& c, const fs::path& base_dir, MeshFiles
   return g;
 }
 
-// A mesh body's "up" (default "+Y", recorded in the canonical spelling so the
-// resolved scene reruns alike).
+// A mesh body's "up" (default "+Y").
 UpAxis parse_up(const JsonCursor& body) {
-  if (!body.has("up")) {
-    body.string_or("up", to_string(UpAxis::pos_y));
-    return UpAxis::pos_y;
-  }
+  if (!body.has("up")) return UpAxis::pos_y;
   const JsonCursor c = body.child("up");
   const std::string text = c.string();
   const std::optional<UpAxis> axis = parse_up_axis(text);
   if (!axis) c.fail("unknown up axis \"" + text + "\" (" + kUpAxisChoices + ")");
-  c.resolve_as(to_string(*axis));
   return *axis;
 }
 
@@ -227,6 +223,7 @@ Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir, MeshFi
   if (primitive) {
     if (body.has("up")) body.child("up").fail("only for mesh files; a primitive's axes are its own (use transform.rotation)");
     g.surface = parse_primitive(body.child("primitive"), g.box);
+    g.primitive = body.child("primitive").value();
     return g;
   }
   g = read_mesh_file(body.child("mesh"), base_dir, files);
@@ -296,7 +293,6 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   if (const std::string why = unsafe_name_reason(out.name); !why.empty()) body.child("name").fail(why);
   if (!so_far.names.insert(out.name).second) body.child("name").fail("duplicate body name \"" + out.name + "\"");
   const sim::FrictionDesc friction = body.has("friction") ? parse_friction(body.child("friction")) : sim::FrictionDesc{};
-  if (!body.has("friction")) body.number_in_or("friction", friction.static_coefficient, kFrictionRange);  // records the default
 
   if (out.is_plane()) {
     sim::PlaneDesc plane;
@@ -315,13 +311,14 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   if (body.has("color")) {
     out.color = parse_body_color(body.child("color"));
   } else {
-    const std::string hex = palette_hex(so_far.mesh_bodies++);
-    body.string_or("color", hex);
-    out.color = parse_color(hex, "color");
+    out.color = palette_color(so_far.mesh_bodies++);
   }
   out.opacity = static_cast<float>(body.number_in_or("opacity", 1.0, {0.0, 1.0}));
   Geometry geometry = parse_geometry(body, base_dir, so_far.files);
   out.open_mesh = geometry.open;
+  out.mesh_file = geometry.file;
+  out.up = geometry.up;
+  out.primitive = geometry.primitive;
   const sim::Transform transform = parse_transform(body.child_or_empty("transform"));
   check_placed_extent(body, geometry.surface, transform);
 
@@ -350,13 +347,12 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
       } else {
         const JsonCursor f = tets.child("file");
         const fs::path path = resolve_file(f, base_dir);
+        out.tets_file = absolute_path(path);
         if (!is_tet_file(path)) f.fail("expected a tetrahedral mesh (.msh, .node or .ele), got " + path.string());
         d.tets = load_geometry(f, [&] { return sim::read_tet_file(path); });
         if (d.tets.empty()) f.fail("holds no tetrahedra: " + path.string());
         apply_up(geometry.up, d.tets);  // the tets share the mesh file's axes
       }
-    } else if (d.tets.empty()) {
-      body.child_or_empty("tets").integer_in_or("resolution", d.resolution, 1, 256);
     }
     // A deformable box's faces get `resolution` cells per edge, the lattice's
     // spacing for a cube, in place of the primitive's default 8: a surface
@@ -401,6 +397,11 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
 }
 
 }  // namespace
+
+bool is_tet_file(const fs::path& path) {
+  const std::string ext = path.extension().string();
+  return ext == ".msh" || ext == ".node" || ext == ".ele";
+}
 
 void parse_bodies(const std::vector<JsonCursor>& bodies, const fs::path& base_dir, SceneDesc& scene,
                   ImportedMeshes imported) {

@@ -17,4 +17,7 @@ namespace recoil::cli {
 void parse_bodies(const std::vector<JsonCursor>& bodies, const std::filesystem::path& base_dir, SceneDesc& scene,
                   ImportedMeshes imported = {});
 
+// Whether `path` names a tetrahedral mesh file (.msh, .node, .ele) by its extension.
+bool is_tet_file(const std::filesystem::path& path);
+
 }  // namespace recoil::cli

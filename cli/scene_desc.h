@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "cli/render_options.h"
+#include "cli/up_axis.h"
 #include "render/render_scene.h"
 #include "sim/body/body_kind.h"
 #include "sim/world_desc.h"
@@ -31,6 +32,12 @@ struct SceneBody {
   float opacity = 1.0f;
   std::string pointer;        // "/bodies/3", for messages
   bool open_mesh = false;     // from a surface file that is not watertight (inside/outside by winding number)
+  // Where a mesh body's shape came from, as the scene gave it (the world
+  // description holds only the meshes made from it).
+  std::filesystem::path mesh_file;  // absolute; empty for a primitive
+  UpAxis up = UpAxis::pos_y;        // the mesh file's up axis
+  nlohmann::json primitive;         // the validated "primitive" object; null for a mesh file
+  std::filesystem::path tets_file;  // deformable: the "tets" file, absolute; empty: tets.resolution
 
   bool is_plane() const { return !kind; }
 };
@@ -55,6 +62,7 @@ struct CameraDesc {
 
 struct SceneDesc {
   std::string name;
+  std::string description;      // free text; empty when not given
   std::filesystem::path file;   // where it was read from (empty when built in memory)
   sim::WorldDesc world;
   double duration = 3.0;        // s of simulated time; frames cover [0, duration] after the settling
@@ -65,7 +73,6 @@ struct SceneDesc {
   RenderOptions render;         // resolution, fps, msaa, shadows, background, ...
   bool grid = true;             // grid lines on the ground
   CameraDesc camera;
-  nlohmann::json resolved;      // the scene with every default filled in and absolute paths
 
   // Frames in [0, duration] at render.fps: frame k shows time (k - 1) / fps.
   int frame_count() const;

@@ -85,8 +85,6 @@ void parse_render(const JsonCursor& c, SceneDesc& scene) {
     int size[2];
     for (int k = 0; k < 2; ++k) size[k] = wh[static_cast<size_t>(k)].integer_in(16, 16384);
     r.resolution = std::to_string(size[0]) + "x" + std::to_string(size[1]);
-  } else {
-    c.child_or_empty("resolution").resolve_as(nlohmann::json::array({1280, 720}));
   }
   r.fps = c.number_in_or("fps", r.fps, kFpsRange);
   r.msaa = c.integer_in_or("msaa", r.msaa, 0, 4);
@@ -138,8 +136,7 @@ const SceneBody* SceneDesc::find(const std::string& body_name) const {
 SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, const fs::path& base_dir,
                       ImportedMeshes imported) {
   SceneDesc scene;
-  scene.resolved = nlohmann::json::object();
-  const JsonCursor root(document, scene.resolved, file);
+  const JsonCursor root(document, file);
   root.expect_object({"recoil", "name", "description", "simulation", "bodies", "render"});
   if (!root.has("recoil")) root.fail("missing \"recoil\": 1 (the scene format version)");
   const JsonCursor version = root.child("recoil");
@@ -148,7 +145,7 @@ SceneDesc parse_scene(const nlohmann::json& document, const std::string& file, c
   scene.name = root.string_or("name", fs::path(file).stem().string());
   if (const std::string why = unsafe_name_reason(scene.name); !why.empty())
     (root.has("name") ? root.child("name") : root).fail(root.has("name") ? why : "the file's name " + why + "; give \"name\"");
-  if (root.has("description")) root.child("description").string();
+  if (root.has("description")) scene.description = root.child("description").string();
   parse_simulation(root.child_or_empty("simulation"), scene);
   const JsonCursor bodies_field = root.child("bodies");
   if (bodies_field.value().is_array() && bodies_field.value().size() > static_cast<size_t>(kMaxBodies))

@@ -19,6 +19,7 @@
 #include "cli/rest_watch.h"
 #include "cli/run_report.h"
 #include "cli/scene_view.h"
+#include "cli/scene_writer.h"
 #include "cli/video_encoder.h"
 #include "cli/work_limits.h"
 #include "core/atomic_write.h"
@@ -141,7 +142,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   // Outputs only once the world and the renderer exist: a refused scene writes nothing.
   ensure_output_dir(job.output_dir);
   remove_stale_temporaries(job.output_dir);
-  write_text_atomically(job.output_dir / "scene.json", scene.resolved.dump(2) + "\n");
+  write_text_atomically(job.output_dir / "scene.json", resolved_scene(scene).dump(2) + "\n");
   const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
   if (stats_path.has_parent_path()) ensure_output_dir(stats_path.parent_path());
   errno = 0;
