@@ -103,7 +103,7 @@ const char* to_string(SolverMethod method);
 // with each contact's 3x3 block J_k P_A^-1 J_k^T on its selected rows;
 // ssor = block SSOR (omega 1.5) for P_A, without the rigid modes (a stiff
 // body converges slowly under it), with the contact blocks. Measurements in
-// cr_solver.h.
+// docs/decisions/009-contact-preconditioner.md.
 enum class CrPreconditioner { block_jacobi, contact_blocks, ssor };
 const char* to_string(CrPreconditioner preconditioner);
 
@@ -118,7 +118,7 @@ struct ContactSolverSettings {
   double constraint_tolerance = 1e-6;  // epsilon_2, m/s: smallest accepted change of a contact, and
                                        // the bound on each constraint row's residual at convergence
   int max_relinearizations = 16;       // relinearize calls per solve
-  // the preconditioner of `cr` (cr_plain is always C = I); see cr_solver.h.
+  // the preconditioner of `cr` (cr_plain is always C = I).
   CrPreconditioner preconditioner = CrPreconditioner::block_jacobi;
 };
 
