@@ -75,8 +75,11 @@ FUZZ_RUNS ?= 50000
 fuzz-smoke: fuzz-build
 	bash fuzz/run.sh $(FUZZ_BUILD) runs=$(FUZZ_RUNS) $(FUZZ_TARGETS)
 
+# docs/performance.md from one run of every bench (`recoil_bench NAME` runs some, and writes no page).
 bench: build
-	$(BUILD)/recoil_bench
+	$(BUILD)/recoil_bench > $(BUILD)/bench.md
+	python3 scripts/performance_doc.py $(BUILD)/bench.md docs/performance.md
+	@cat docs/performance.md
 
 # docs/validation.md from what the validation suite measures (each test
 # records its results); the page is written even when a check fails, and the

@@ -23,15 +23,19 @@ struct Register {
 // Wall-clock milliseconds of the fastest of `repeats` calls to `fn`.
 double best_ms(int repeats, const std::function<void()>& fn);
 
-// Prints an aligned text table: a title, a header row, then rows.
+// Prints a Markdown table: a title, what it measures (optional), a header
+// row, then rows; `make bench` gathers them into docs/performance.md.
 class BenchTable {
  public:
   BenchTable(std::string title, std::vector<std::string> columns);
+  // A paragraph printed under the title: the set-up and how to read the table.
+  void note(std::string text) { m_note = std::move(text); }
   void add_row(std::vector<std::string> cells);
   void print() const;
 
  private:
   std::string m_title;
+  std::string m_note;
   std::vector<std::string> m_columns;
   std::vector<std::vector<std::string>> m_rows;
 };

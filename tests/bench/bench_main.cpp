@@ -55,6 +55,7 @@ void BenchTable::print() const {
     std::cout << "\n";
   };
   std::cout << "\n## " << m_title << "\n\n";
+  if (!m_note.empty()) std::cout << m_note << "\n\n";
   print_row(m_columns);
   std::cout << "|";
   for (size_t w : width) std::cout << std::string(w + 2, '-') << "|";

@@ -1,5 +1,6 @@
 // Candidate search cost per step against surface size (two subdivided spheres
 // pressed together), and the Embree detector against the brute-force oracle.
+#include <deque>
 #include <iostream>
 
 #include "sim/collision/brute_force.h"
@@ -13,14 +14,17 @@ namespace {
 using sim::CollisionSurface;
 
 // Two unit spheres overlapping by 1 mm, closing at 0.5 mm per step, the left
-// one deformable (self-contact on if asked), the right one rigid.
+// one deformable (self-contact on if asked, measured from its starting shape
+// as its rest shape), the right one rigid.
 std::vector<CollisionSurface> touching_spheres(int subdivisions_left, int subdivisions_right, bool self = true) {
+  static std::deque<sim::Points> rest_shapes;  // stable addresses for CollisionSurface::rest
   sim::TriMesh left = sim::testing::icosphere(subdivisions_left);
   sim::TriMesh right = sim::testing::icosphere(subdivisions_right);
   right.vertices.col(0).array() += 2.0 - 0.001;
   std::vector<CollisionSurface> s;
   s.push_back(sim::testing::moving_surface(left, 0, sim::BodyKind::deformable, {0.00025, 0, 0}));
   s.back().self_contact = self;
+  if (self) s.back().rest = &rest_shapes.emplace_back(s.back().x0);
   s.push_back(sim::testing::moving_surface(right, 1, sim::BodyKind::rigid, {-0.00025, 0, 0}));
   return s;
 }

@@ -113,6 +113,9 @@ void bench_contact() {
   BenchTable table("contact solvers per step (tolerance 1e-7)",
                    {"scene", "method", "steps (after warm-up)", "iterations/step", "ms/step", "solve ms/step", "worst KKT m/s",
                     "max penetration mm", "not converged"});
+  table.note(
+      "Each scene is warmed up with `cr`, then the same steps are solved by `cr`, `cr_plain` and `pgs` from the same "
+      "state, at the same KKT tolerance.");
   BenchTable ratios("contact solver ratios", {"scene", "cr/pgs time", "cr_plain/cr iterations"});
   // Where the Krylov iterations go: every accepted change of the
   // system restarts the solve, and the restarted solve pays for itself again.

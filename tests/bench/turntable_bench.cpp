@@ -19,6 +19,10 @@ void bench_turntable() {
   BenchTable table("recoil turntable end to end, 1920x1080, MSAA 4, shadows, PNG level 1",
                    {"mesh", "triangles", "frames", "build ms", "render ms/frame", "encode ms/frame",
                     "end-to-end ms/frame", "sum / end-to-end"});
+  table.note(
+      "`recoil turntable` as a user runs it, one process per mesh, 12 frames of a turn; the figures are the run's "
+      "own (`run.json`). \"End to end\" is the run less the world's build, per frame; a sum of render and encode "
+      "above it means PNG encoding overlapped the next frame's rendering.");
   struct Subject {
     const char* name;
     sim::TriMesh mesh;
