@@ -32,7 +32,13 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
     for (SceneBody& body : scene.bodies)
       if (!body.is_plane()) body.color = color;
   }
-  if (given(o, "--camera-distance")) scene.camera.distance = o.render.camera_distance;  // 0: fit the scene
+  if (given(o, "--camera-distance")) {
+    // A camera standing at a given position has no distance to change.
+    if (o.render.camera_distance > 0.0 && scene.camera.mode == CameraMode::fixed && scene.camera.has_position)
+      throw bad_input("--camera-distance: " + scene.label() +
+                      " places its camera at /render/camera/position; remove that to frame the scene from a distance");
+    scene.camera.distance = o.render.camera_distance;  // 0: fit the scene
+  }
   to_render_settings(scene.render);  // validates the combination (fps, resolution)
 }
 

@@ -135,6 +135,26 @@ TEST(RunCommand, ColorAndCameraDistanceOverridesGiveASceneRunAccepts) {
   EXPECT_EQ(file_bytes(dir / "frame_0001.png"), file_bytes(rerun / "frame_0001.png"));  // drawn the same
 }
 
+TEST(RunCommand, ACameraDistanceThatCannotApplyIsRefused) {
+  // The demo's camera stands at a given position: a distance from the target cannot move it.
+  const fs::path dir = scratch_dir("run_distance_refused");
+  const fs::path scene = source_path("assets/scenes/bunny-drop.json");
+  CommandResult r = run_recoil("run " + shell_quote(scene) + " --camera-distance 6 --no-render -o " + shell_quote(dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--camera-distance: " + scene.string()), std::string::npos) << r.err;
+  EXPECT_NE(r.err.find("/render/camera/position"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+  // Nor may a scene file give both.
+  json document = json::parse(file_bytes(scene));
+  document["render"]["camera"]["distance"] = 6;
+  for (json& body : document["bodies"])
+    if (body.contains("mesh")) body["mesh"] = source_path("assets/meshes/bunny.obj").string();
+  std::ofstream(dir / "both.json") << document.dump();
+  r = run_recoil("run " + shell_quote(dir / "both.json") + " --no-render -o " + shell_quote(dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find((dir / "both.json").string() + ": /render/camera/distance: has no effect"), std::string::npos) << r.err;
+}
+
 TEST(RunCommand, SameSceneTwiceGivesIdenticalFramesAndStats) {
   const fs::path a = scratch_dir("run_det_a"), b = scratch_dir("run_det_b");
   const fs::path scene = source_path("assets/scenes/jelly-stack.json");
