@@ -186,23 +186,23 @@ struct BodiesSoFar {
 
 // A mesh file as read, cached unrotated (bodies may give it different "up"s).
 Geometry read_mesh_file(const JsonCursor& c, const fs::path& base_dir, MeshFiles& files) {
-  Geometry g;
   const fs::path path = resolve_file(c, base_dir).lexically_normal();
-  g.file = absolute_path(path);
-  if (auto known = files.find(path); known != files.end()) {
-    known->second.file = g.file;
-    return known->second;
-  }
-  if (is_tet_file(path)) {
-    g.tets = load_geometry(c, [&] { return sim::read_tet_file(path); });
-    if (g.tets.empty()) c.fail("holds no tetrahedra: " + path.string());
-    g.surface = sim::boundary_surface(g.tets);
+  Geometry g;
+  if (const auto known = files.find(path); known != files.end()) {
+    g = known->second;
   } else {
-    g.surface = load_geometry(c, [&] { return sim::import_surface(path); });
-    g.open = !sim::compute_mesh_stats(g.surface).watertight;
+    if (is_tet_file(path)) {
+      g.tets = load_geometry(c, [&] { return sim::read_tet_file(path); });
+      if (g.tets.empty()) c.fail("holds no tetrahedra: " + path.string());
+      g.surface = sim::boundary_surface(g.tets);
+    } else {
+      g.surface = load_geometry(c, [&] { return sim::import_surface(path); });
+      g.open = !sim::compute_mesh_stats(g.surface).watertight;
+    }
+    if (g.surface.empty()) c.fail("holds no triangles: " + path.string());
+    files.emplace(path, g);
   }
-  if (g.surface.empty()) c.fail("holds no triangles: " + path.string());
-  files.emplace(path, g);
+  g.file = absolute_path(path);
   return g;
 }
 
@@ -235,9 +235,9 @@ Geometry parse_geometry(const JsonCursor& body, const fs::path& base_dir, MeshFi
 
 void parse_material(const JsonCursor& c, sim::Material& m) {
   c.expect_object({"model", "youngs_modulus", "poisson_ratio", "density", "damping"});
-  const std::string model = c.string_or("model", "corotated");
-  if (model == "corotated") m.model = sim::MaterialModel::corotated;
-  else if (model == "neohookean") m.model = sim::MaterialModel::neo_hookean;
+  const std::string model = c.string_or("model", material_model_name(sim::MaterialModel::corotated));
+  if (model == material_model_name(sim::MaterialModel::corotated)) m.model = sim::MaterialModel::corotated;
+  else if (model == material_model_name(sim::MaterialModel::neo_hookean)) m.model = sim::MaterialModel::neo_hookean;
   else c.child("model").fail("unknown material model \"" + model + "\" (corotated or neohookean)");
   m.youngs_modulus = c.number_in_or("youngs_modulus", 1e5, kYoungsModulusRange);
   m.poisson_ratio = c.number_in_or("poisson_ratio", 0.3, {0.0, 0.5, false, true});

@@ -43,6 +43,10 @@ struct SceneBody {
 };
 
 enum class CameraMode { fixed, orbit, follow };
+// "fixed", "orbit" or "follow", as the scene file spells camera modes.
+const char* camera_mode_name(CameraMode mode);
+// "corotated" or "neohookean", as the scene file spells material models.
+const char* material_model_name(sim::MaterialModel model);
 
 // A camera with `has_position` false is fitted to the scene at frame 1, seen
 // from `azimuth`/`elevation`; `distance` 0 means "fit".

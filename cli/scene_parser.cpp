@@ -1,6 +1,8 @@
 #include "cli/scene_parser.h"
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <fstream>
 #include <sstream>
 
@@ -12,6 +14,8 @@
 namespace recoil::cli {
 namespace fs = std::filesystem;
 namespace {
+
+constexpr CameraMode kCameraModes[] = {CameraMode::fixed, CameraMode::orbit, CameraMode::follow};
 
 void parse_simulation(const JsonCursor& c, SceneDesc& scene) {
   c.expect_object({"dt", "duration", "settle", "gravity", "solver", "contact"});
@@ -41,11 +45,12 @@ void parse_simulation(const JsonCursor& c, SceneDesc& scene) {
 void parse_camera(const JsonCursor& c, SceneDesc& scene) {
   c.expect_object({"mode", "position", "target", "fov", "azimuth", "elevation", "distance", "turns", "body"});
   CameraDesc& cam = scene.camera;
-  const std::string mode = c.string_or("mode", "fixed");
-  if (mode == "fixed") cam.mode = CameraMode::fixed;
-  else if (mode == "orbit") cam.mode = CameraMode::orbit;
-  else if (mode == "follow") cam.mode = CameraMode::follow;
-  else c.child("mode").fail("unknown camera mode \"" + mode + "\" (fixed, orbit or follow)");
+  const std::string mode = c.string_or("mode", camera_mode_name(CameraMode::fixed));
+  const auto known = std::find_if(std::begin(kCameraModes), std::end(kCameraModes),
+                                  [&](CameraMode m) { return mode == camera_mode_name(m); });
+  if (known == std::end(kCameraModes))
+    c.child("mode").fail("unknown camera mode \"" + mode + "\" (fixed, orbit or follow)");
+  cam.mode = *known;
   auto only_for = [&](const char* key, CameraMode allowed, const char* mode_name) {
     if (c.has(key) && cam.mode != allowed)
       c.child(key).fail(std::string("only for camera mode \"") + mode_name + "\"");
@@ -113,6 +118,19 @@ const char* scene_type_name(std::optional<sim::BodyKind> kind) {
     case sim::BodyKind::deformable: return "deformable";
   }
   return "?";
+}
+
+const char* camera_mode_name(CameraMode mode) {
+  switch (mode) {
+    case CameraMode::fixed: return "fixed";
+    case CameraMode::orbit: return "orbit";
+    case CameraMode::follow: return "follow";
+  }
+  return "?";
+}
+
+const char* material_model_name(sim::MaterialModel model) {
+  return model == sim::MaterialModel::neo_hookean ? "neohookean" : "corotated";
 }
 
 const char* solver_name(sim::SolverMethod method) {

@@ -1,7 +1,10 @@
 #include "cli/scene_writer.h"
 
+#include <charconv>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <string>
 
 #include "cli/json_cursor.h"
 #include "cli/scene_bodies.h"
@@ -18,7 +21,8 @@ json friction_json(double static_coefficient, double kinetic_coefficient) {
 }
 
 json transform_json(const sim::Transform& t) {
-  const bool uniform = t.scale.x() == t.scale.y() && t.scale.y() == t.scale.z();
+  // One number only for a uniform scale that does not mirror: a scene's scalar scale is positive.
+  const bool uniform = t.scale.x() > 0.0 && t.scale.x() == t.scale.y() && t.scale.y() == t.scale.z();
   return {{"position", json_vec3(t.position)},
           {"rotation", json_vec3(t.rotation)},
           {"scale", uniform ? json(t.scale.x()) : json_vec3(t.scale)}};
@@ -32,6 +36,13 @@ std::string color_hex(const render::Rgb& c) {
   return text;
 }
 
+// The shortest decimal that reads back as `x` (0.3f is written 0.3, not 0.30000001192092896).
+double shortest_double(float x) {
+  char text[32];
+  const auto end = std::to_chars(text, text + sizeof text, x).ptr;
+  return std::strtod(std::string(text, end).c_str(), nullptr);
+}
+
 json collision_json(const sim::CollisionSurfaceDesc& c) {
   if (c.keep_mesh) return "mesh";
   if (c.max_triangles > 0) return {{"triangles", c.max_triangles}};
@@ -39,10 +50,6 @@ json collision_json(const sim::CollisionSurfaceDesc& c) {
 }
 bool has_collision_setting(const sim::CollisionSurfaceDesc& c) {
   return c.keep_mesh || c.max_triangles > 0 || c.edge_length > 0.0;
-}
-
-const char* material_model_name(sim::MaterialModel model) {
-  return model == sim::MaterialModel::neo_hookean ? "neohookean" : "corotated";
 }
 
 json body_json(const SceneBody& body, const sim::WorldDesc& world) {
@@ -56,7 +63,7 @@ json body_json(const SceneBody& body, const sim::WorldDesc& world) {
     return out;
   }
   out["color"] = color_hex(body.color);
-  out["opacity"] = body.opacity;
+  out["opacity"] = shortest_double(body.opacity);
   if (body.mesh_file.empty()) {
     out["primitive"] = body.primitive;
   } else {
@@ -95,8 +102,7 @@ json body_json(const SceneBody& body, const sim::WorldDesc& world) {
 }
 
 json camera_json(const CameraDesc& c) {
-  const char* mode = c.mode == CameraMode::orbit ? "orbit" : c.mode == CameraMode::follow ? "follow" : "fixed";
-  json out = {{"mode", mode}, {"fov", c.fov}, {"azimuth", c.azimuth}, {"elevation", c.elevation}};
+  json out = {{"mode", camera_mode_name(c.mode)}, {"fov", c.fov}, {"azimuth", c.azimuth}, {"elevation", c.elevation}};
   if (c.has_position) out["position"] = json_vec3(c.position);
   if (c.has_target) out["target"] = json_vec3(c.target);
   if (c.distance > 0.0) out["distance"] = c.distance;  // 0, "fit the scene", is the key left out

@@ -18,11 +18,16 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const nlohmann::json document = recoil::cli::parse_json_text(text, "fuzz.json");
     const recoil::cli::SceneDesc scene = recoil::cli::parse_scene(document, "fuzz.json", recoil::fuzz::scratch_folder());
     const nlohmann::json written = recoil::cli::resolved_scene(scene);
-    const recoil::cli::SceneDesc again = recoil::cli::parse_scene(written, "resolved.json", recoil::fuzz::scratch_folder());
-    if (recoil::cli::resolved_scene(again) != written) {
+    // Any failure from here on is a finding, a refusal of the written scene included.
+    try {
+      const recoil::cli::SceneDesc again =
+          recoil::cli::parse_scene(written, "resolved.json", recoil::fuzz::scratch_folder());
+      if (recoil::cli::resolved_scene(again) == written) return;
       std::fprintf(stderr, "the resolved scene does not read back alike:\n%s\n", written.dump(2).c_str());
-      std::abort();
+    } catch (const recoil::Error& e) {
+      std::fprintf(stderr, "the resolved scene is refused: %s\n%s\n", e.what(), written.dump(2).c_str());
     }
+    std::abort();
   });
   return 0;
 }

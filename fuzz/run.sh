@@ -38,16 +38,18 @@ for target in "$@"; do
   [[ $name == mesh_import ]] && asan=detect_leaks=0${asan:+:$asan}
   marker=$(mktemp)  # findings of earlier runs stay in $findings but are not counted again
   start=$(date +%s)
-  seeds=("$here/corpus/$name")
+  # libFuzzer writes what it finds into the first folder it is given: the
+  # build's corpus (or a replay's throw-away one), never the committed seeds.
+  inputs=("$corpus" "$here/corpus/$name")
   if [[ $replay == 1 ]]; then
     # libFuzzer takes a folder's files in the file system's listing order, which differs
     # between clones; a list in name order makes the replay the same everywhere.
     list=$(mktemp)
     find "$here/corpus/$name" -type f | LC_ALL=C sort | paste -sd, - >"$list"
-    seeds=(-seed_inputs=@"$list")
+    inputs=(-seed_inputs=@"$list" "$corpus")
   fi
   TMPDIR=$scratch ASAN_OPTIONS=$asan "$build/fuzz/$target" "${flags[@]}" -dict="$here/$name.dict" -artifact_prefix="$findings/" \
-    "${seeds[@]}" "$corpus" >"$log" 2>&1
+    "${inputs[@]}" >"$log" 2>&1
   rc=$?
   elapsed=$(( $(date +%s) - start ))
   execs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*$')

@@ -57,7 +57,7 @@ World::World(const WorldDesc& desc)
     throw bad_input(simulation + ": the linear solver's tolerance must be > 0 and max_iterations >= 1");
   if (!(desc.contact.margin > 0.0) || !std::isfinite(desc.contact.margin))
     throw bad_input(simulation + "/contact/margin: must be > 0");
-  if (desc.contact.num_threads < 1) throw bad_input(simulation + ": contact num_threads must be >= 1");
+  if (desc.contact.num_threads < 1) throw bad_input("contact num_threads (--threads) must be >= 1");
   if (!(desc.contact.solver.tolerance > 0.0) || desc.contact.solver.max_iterations < 1)
     throw bad_input(simulation + "/solver: tolerance must be > 0 and max_iterations >= 1");
   int nodes = 0;

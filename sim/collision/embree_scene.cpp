@@ -153,6 +153,7 @@ TriangleScene::TriangleScene(EmbreeDevice& device, const Points& vertices, const
   m_impl->indices = index_buffer;
   m_impl->direct = m_num_triangles <= kDirectTriangles;
   rtcAttachGeometryByID(m_impl->scene, m_impl->geometry, 0);
+  device.throw_if_error("building a triangle scene");
   m_impl->stale = true;
   if (!m_impl->direct) commit_if_moved(*m_impl);
 }

@@ -50,7 +50,16 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
   body.lame = lame_parameters(desc.material.youngs_modulus, desc.material.poisson_ratio);
 
   // Local rest shape, then the initial transform on both tets and surface.
-  body.rest = desc.tets.empty() ? tetrahedralize(device, desc.mesh, desc.resolution) : desc.tets;
+  if (desc.tets.empty()) {
+    try {
+      body.rest = tetrahedralize(device, desc.mesh, desc.resolution);
+    } catch (const Error& e) {
+      if (e.kind() != ErrorKind::bad_input) throw;
+      throw bad_input(where + ": " + e.what());
+    }
+  } else {
+    body.rest = desc.tets;
+  }
   body.surface = desc.mesh.empty() ? compact_boundary(body.rest) : desc.mesh;
   const Eigen::Matrix3d R = desc.transform.rotation_matrix();
   transform_in_place(body.rest, R, desc.transform.scale, desc.transform.position);

@@ -65,6 +65,14 @@ TEST(SceneFile, ResolvedSceneParsesToTheSameDescription) {
     const nlohmann::json written = cli::resolved_scene(cli::load_scene(entry.path()));
     EXPECT_EQ(cli::resolved_scene(cli::parse_scene(written, "resolved.json", "/")), written) << entry.path();
   }
+  // A mirroring uniform scale stays a vector (a scalar scale is positive), and a float opacity is written short.
+  const nlohmann::json mirrored = nlohmann::json::parse(R"({"recoil": 1, "name": "m", "bodies": [
+    {"type": "rigid", "primitive": {"box": [0.1, 0.2, 0.3]}, "opacity": 0.3,
+     "transform": {"scale": [-1, -1, -1]}}]})");
+  const nlohmann::json written = cli::resolved_scene(cli::parse_scene(mirrored, "m.json", "/"));
+  EXPECT_EQ(written["bodies"][0]["transform"]["scale"], nlohmann::json::array({-1.0, -1.0, -1.0}));
+  EXPECT_EQ(written["bodies"][0]["opacity"].dump(), "0.3");
+  EXPECT_EQ(cli::resolved_scene(cli::parse_scene(written, "resolved.json", "/")), written);
   const cli::SceneDesc a = cli::load_scene(source_path("assets/scenes/rollers.json"));
   const cli::SceneDesc b = cli::parse_scene(cli::resolved_scene(a), "resolved.json", "/");
   ASSERT_EQ(b.world.rigid_bodies.size(), 2u);
