@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "cli/build_info.h"
+#include "cli/peak_memory.h"
 #include "cli/scene_runner.h"
 
 namespace recoil::cli {
@@ -56,6 +57,7 @@ void RunReport::finish(const sim::World& world, const RunResult& result, double 
   m_tail = {{"frames", {{"written", result.frames_written}, {"skipped", result.frames_skipped}}},
             {"steps", result.steps},
             {"simulated_seconds", world.time()},
+            {"peak_memory_mib", peak_memory_mib() ? nlohmann::json(*peak_memory_mib()) : nlohmann::json()},
             {"settle", result.settle_limit > 0.0 ? nlohmann::json{{"limit_s", result.settle_limit},
                                                                  {"time_s", result.settle_time},
                                                                  {"at_rest", result.settled}}

@@ -110,6 +110,7 @@ TEST(RunCommand, RendersTheSelectedFramesAndWritesSpecStats) {
   commit.erase(commit.find_last_not_of("\n") + 1);
   EXPECT_EQ(run["build"]["git"].get<std::string>().rfind(commit, 0), 0u) << run["build"] << " built from " << commit;
   EXPECT_EQ(run["frames"]["written"], 2);
+  EXPECT_GT(run["peak_memory_mib"].get<double>(), 1.0);  // the run's own high-water mark, MiB
   const json resolved = json::parse(file_bytes(dir / "scene.json"));
   EXPECT_EQ(resolved["render"]["resolution"], json::array({64, 48}));  // the override is recorded
 }
