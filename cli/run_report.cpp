@@ -54,10 +54,11 @@ void RunReport::add_frame(const FrameTimes& times) { timings.render += times.ren
 void RunReport::finish(const sim::World& world, const RunResult& result, double total_ms) {
   timings.total = total_ms;
   const sim::WorldCounters& c = world.counters();
+  const std::optional<double> peak = peak_memory_mib();
   m_tail = {{"frames", {{"written", result.frames_written}, {"skipped", result.frames_skipped}}},
             {"steps", result.steps},
             {"simulated_seconds", world.time()},
-            {"peak_memory_mib", peak_memory_mib() ? nlohmann::json(*peak_memory_mib()) : nlohmann::json()},
+            {"peak_memory_mib", peak ? nlohmann::json(*peak) : nlohmann::json()},
             {"settle", result.settle_limit > 0.0 ? nlohmann::json{{"limit_s", result.settle_limit},
                                                                  {"time_s", result.settle_time},
                                                                  {"at_rest", result.settled}}

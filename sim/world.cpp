@@ -257,8 +257,6 @@ void World::set_state(const Eigen::VectorXd& positions, const Eigen::VectorXd& v
     body.pose.center = m_x.segment<3>(3 * body.linear_node);
     body.pose.orientation = from_rotation_vector(m_x.segment<3>(3 * body.linear_node + 3));
     m_x.segment<6>(3 * body.linear_node).setZero();  // the pose is the body's alone
-    body.velocity = m_v.segment<3>(3 * body.linear_node);
-    body.angular_velocity = m_v.segment<3>(3 * body.linear_node + 3);
   }
   m_memory.clear();
   if (reset_energy_ref && positions.allFinite() && velocities.allFinite()) reset_energy_reference();

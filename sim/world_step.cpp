@@ -258,8 +258,6 @@ void World::integrate() {
     body.pose = advance_pose(body.pose, m_v.segment<3>(3 * n), w, m_dt);
     // Gyroscopic effect: keep L with the turned inertia, w = I(t+h)^-1 L.
     m_v.segment<3>(3 * n + 3) = body.world_inertia().ldlt().solve(momentum);
-    body.velocity = m_v.segment<3>(3 * n);
-    body.angular_velocity = m_v.segment<3>(3 * n + 3);
   }
 }
 

@@ -43,6 +43,8 @@ struct RigidBody {
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();      // kg m^2, body frame, about the centre of mass
   FrictionDesc friction;
   RigidPose pose;
+  // Kinematic: the prescribed motion; dynamic: the initial one only (the
+  // World's velocity vector holds it from then on, at linear_node).
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();          // m/s, world, of the reference point
   Eigen::Vector3d angular_velocity = Eigen::Vector3d::Zero();  // rad/s, world
   int linear_node = -1;   // dynamic: DoF node of the velocity; the angular velocity is node linear_node + 1
