@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cctype>
 #include <charconv>
+#include <cstdio>
 #include <fstream>
 #include <sstream>
 #include <string_view>
@@ -110,9 +111,15 @@ void check_ascii_list_counts(std::istream& body, const std::vector<PlyElement>& 
 // `head` starts at the magic, `head_offset` bytes into the file at `path`.
 void check_ply(const std::string& head, size_t head_offset, const std::filesystem::path& path, std::uintmax_t file_size,
                const std::string& name) {
-  // A header is text; past a NUL byte assimp 5.2 may search for end_header forever.
-  if (head.find('\0') < head.find("end_header"))
-    throw bad_input(name + ": PLY header holds a NUL byte (a header is text)");
+  // A header is lines of text; past a NUL byte or a form feed assimp 5.2 may search for end_header forever.
+  const size_t control = std::find_if(head.begin(), head.end(), [](char c) {
+                           return static_cast<unsigned char>(c) < ' ' && c != '\n' && c != '\r' && c != '\t';
+                         }) - head.begin();
+  if (control < head.size() && control < head.find("end_header")) {
+    char code[8];
+    std::snprintf(code, sizeof code, "0x%02X", static_cast<unsigned>(static_cast<unsigned char>(head[control])));
+    throw bad_input(name + ": PLY header holds the control byte " + code + " (a header is lines of text)");
+  }
   // assimp ends a header line at '\n', '\r', form feed or NUL.
   constexpr std::string_view kLineEnd("\n\r\f\0", 4);
   size_t next = std::min(head.find_first_of(kLineEnd), head.size());  // past "ply"
@@ -219,8 +226,12 @@ void check_off(const std::string& head, bool named_off, std::uintmax_t file_size
   if (head.compare(p, 6, "BINARY") == 0) return;  // binary OFF files store the counts as integers
   std::uint64_t dimension = 0, vertices = 0, faces = 0;
   if (has_dimension && !next_count(dimension)) return;
-  if (!next_count(vertices) || !next_count(faces)) return;
-  // At least "0 0 0\n" per vertex and "0\n" per face.
+  if (!next_count(vertices)) return;
+  // At least "0 0 0\n" per vertex and "0\n" per face; assimp allocates the
+  // vertices even when what follows is no face count.
+  if (6.0L * static_cast<long double>(vertices) > static_cast<long double>(file_size))
+    refuse_counts(name, std::to_string(vertices) + " vertices", file_size);
+  if (!next_count(faces)) return;
   const long double needed = 6.0L * static_cast<long double>(vertices) + 2.0L * static_cast<long double>(faces);
   if (needed > static_cast<long double>(file_size))
     refuse_counts(name, std::to_string(vertices) + " vertices and " + std::to_string(faces) + " faces", file_size);

@@ -7,12 +7,17 @@
 #include <Eigen/Geometry>
 #include <assimp/Importer.hpp>
 #include <cmath>
+#include <algorithm>
 #include <array>
+#include <cstdint>
+#include <cstring>
 #include <map>
 #include <vector>
 
+#include "core/check.h"
 #include "core/error.h"
 #include "core/regular_file.h"
+#include "sim/geometry/isolated_reader.h"
 #include "sim/geometry/mesh_header.h"
 
 namespace recoil::sim {
@@ -64,6 +69,52 @@ void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& pa
     if (node.mChildren[c]) collect(scene, *node.mChildren[c], world, out, depth + 1);
 }
 
+// Every mesh of the file at `path` under its node transforms, merged.
+TriMesh read_with_assimp(const fs::path& path) {
+  Assimp::Importer importer;
+  // Only assimp's validation runs: its other post-processing steps assert
+  // (and abort) on some malformed files, so triangulation, dropping points and
+  // lines, and welding happen in collect() and weld_and_clean() instead
+  // (assimp's own joining also keeps vertices apart that differ in normal or UV).
+  const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
+  if (!scene || !scene->mRootNode) {
+    std::string reason = importer.GetErrorString();
+    if (reason.empty()) reason = "not a mesh file assimp can read";
+    throw bad_input(path.string() + ": cannot read mesh: " + reason);
+  }
+  TriMesh merged;
+  collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), merged, 0);
+  return merged;
+}
+
+// The mesh as bytes: #V and #F (int64), then the vertex rows (double) and the triangle rows (int).
+std::string encode_mesh(const TriMesh& mesh) {
+  const std::int64_t counts[2] = {mesh.vertices.rows(), mesh.triangles.rows()};
+  std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
+  // An empty Eigen matrix has no data pointer, so the copies go through sizes first.
+  bytes.resize(sizeof counts + sizeof(double) * mesh.vertices.size() + sizeof(int) * mesh.triangles.size());
+  if (mesh.vertices.size() > 0)
+    std::memcpy(bytes.data() + sizeof counts, mesh.vertices.data(), sizeof(double) * mesh.vertices.size());
+  if (mesh.triangles.size() > 0)
+    std::memcpy(bytes.data() + bytes.size() - sizeof(int) * mesh.triangles.size(), mesh.triangles.data(),
+                sizeof(int) * mesh.triangles.size());
+  return bytes;
+}
+
+TriMesh decode_mesh(const std::string& bytes) {
+  std::int64_t counts[2] = {0, 0};
+  RECOIL_CHECK(bytes.size() >= sizeof counts);
+  std::memcpy(counts, bytes.data(), sizeof counts);
+  TriMesh mesh;
+  mesh.vertices.resize(counts[0], 3);
+  mesh.triangles.resize(counts[1], 3);
+  const size_t vertex_bytes = sizeof(double) * mesh.vertices.size(), triangle_bytes = sizeof(int) * mesh.triangles.size();
+  RECOIL_CHECK(bytes.size() == sizeof counts + vertex_bytes + triangle_bytes, "mesh of " << bytes.size() << " bytes");
+  if (vertex_bytes > 0) std::memcpy(mesh.vertices.data(), bytes.data() + sizeof counts, vertex_bytes);
+  if (triangle_bytes > 0) std::memcpy(mesh.triangles.data(), bytes.data() + sizeof counts + vertex_bytes, triangle_bytes);
+  return mesh;
+}
+
 }  // namespace
 
 TriMesh weld_and_clean(const TriMesh& mesh) {
@@ -108,19 +159,10 @@ bool is_mesh_file_name(const fs::path& path) {
 TriMesh import_surface(const fs::path& path) {
   require_regular_file(path, "mesh file");
   check_declared_mesh_counts(path);
-  Assimp::Importer importer;
-  // Only assimp's validation runs: its other post-processing steps assert
-  // (and abort) on some malformed files, so triangulation, dropping points and
-  // lines, and welding happen in collect() and weld_and_clean() instead
-  // (assimp's own joining also keeps vertices apart that differ in normal or UV).
-  const aiScene* scene = importer.ReadFile(path.string(), aiProcess_ValidateDataStructure);
-  if (!scene || !scene->mRootNode) {
-    std::string reason = importer.GetErrorString();
-    if (reason.empty()) reason = "not a mesh file assimp can read";
-    throw bad_input(path.string() + ": cannot read mesh: " + reason);
-  }
-  TriMesh merged;
-  collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), merged, 0);
+  // assimp reads tens of MiB a second; a reader still busy after 5 s plus 1 s per MiB is stuck in a loop.
+  const int cpu_seconds = 5 + static_cast<int>(std::min<std::uintmax_t>(fs::file_size(path) >> 20, 1 << 20));
+  TriMesh merged = decode_mesh(read_in_child([&] { return encode_mesh(read_with_assimp(path)); }, path.string(),
+                                             "the mesh reader (assimp)", cpu_seconds));
   for (int v = 0; v < merged.num_vertices(); ++v)
     if (!merged.vertices.row(v).allFinite()) throw bad_input(path.string() + ": mesh has non-finite vertex coordinates");
   TriMesh clean = weld_and_clean(merged);

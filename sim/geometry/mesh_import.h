@@ -11,8 +11,9 @@ namespace recoil::sim {
 // polygons are triangulated, points and lines dropped, vertices at the same
 // position welded (so a surface split by normals or UV seams is closed again)
 // and degenerate triangles dropped.
-// Throws recoil::Error(bad_input) naming the file when it cannot be read or
-// holds no triangles.
+// assimp reads in a child process (isolated_reader.h), so a file that crashes
+// it is a bad file like any other. Throws recoil::Error(bad_input) naming the
+// file when it cannot be read or holds no triangles.
 TriMesh import_surface(const std::filesystem::path& path);
 
 // Whether assimp has a reader for files named like `path` (by extension).

@@ -80,6 +80,8 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   std::ofstream(dir / "vtab.ply") << ply_start << "end_header\v0\n";
   std::ofstream(dir / "last.ply") << ply_start << "end_header";
   std::ofstream(dir / "format.ply") << std::string("ply\nformat ascii\0\0end_header\n", 30);
+  // A format line ending in form feeds sends assimp into an endless loop.
+  std::ofstream(dir / "loop.ply") << "ply\nformat ascii 0\f\fend_header\n";
   // assimp skips form feeds before the magic as line ends, and then searches for end_header forever.
   std::ofstream(dir / "feed.ply") << "\f\f\n" << ply_start << "0\n";
   // ... and after a leading carriage return it reads the magic from the second line: a .ply file must start with it.
@@ -93,6 +95,8 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   // An element line without its count crashes assimp 5.2's reader.
   std::ofstream(dir / "uncounted.ply") << "ply\nformat ascii 1.0\nelement v2ply\nend_header\n0\n";
   std::ofstream(dir / "huge.off") << "OFF\n1000000000 1 0\n0 0 0\n";
+  // assimp allocates the vertices even when no face count follows.
+  std::ofstream(dir / "faceless.off") << "OFF999999#]9\r99999t0\n";
   // assimp reads a .off file without its magic too, and takes a leading '4' for the homogeneous flag.
   std::ofstream(dir / "bare.off") << "4 900000000 1 0\n0 0 0\n";
   const std::string e1 = test::bad_input_within_a_second([&] { import_surface(dir / "huge.ply"); });
@@ -101,8 +105,9 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "unended.ply"); }), "end_header");
   expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "vtab.ply"); }), "end_header");
   expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "last.ply"); }), "end_header");
-  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "format.ply"); }), "NUL byte");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "format.ply"); }), "control byte 0x00");
   expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "feed.ply"); }), "end_header");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "loop.ply"); }), "control byte 0x0C");
   expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "second.ply"); }), "not a PLY file");
   const std::string e_list = test::bad_input_within_a_second([&] { import_surface(dir / "list.ply"); });
   expect_names(e_list, (dir / "list.ply").string());
@@ -112,6 +117,7 @@ TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   const std::string e3 = test::bad_input_within_a_second([&] { import_surface(dir / "huge.off"); });
   expect_names(e3, (dir / "huge.off").string());
   expect_names(e3, "1000000000 vertices");
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "faceless.off"); }), "999999 vertices,");
   const std::string e4 = test::bad_input_within_a_second([&] { import_surface(dir / "bare.off"); });
   expect_names(e4, (dir / "bare.off").string());
   expect_names(e4, "900000000 vertices");
