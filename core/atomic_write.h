@@ -15,6 +15,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/write_fully.h"
 
 namespace recoil {
 
@@ -35,16 +36,9 @@ inline void replace_file(const std::filesystem::path& target, const void* data, 
   };
   const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
   if (fd < 0) throw fail("creating the temporary file", errno, false);
-  const char* bytes = static_cast<const char*>(data);
-  for (size_t done = 0; done < size;) {
-    const ssize_t n = ::write(fd, bytes + done, size - done);
-    if (n < 0 && errno == EINTR) continue;
-    if (n <= 0) {
-      const int saved = n < 0 ? errno : ENOSPC;  // a write of 0 bytes means the disk took no more
-      ::close(fd);
-      throw fail("writing", saved, true);
-    }
-    done += static_cast<size_t>(n);
+  if (const int saved = write_fully(fd, data, size); saved != 0) {
+    ::close(fd);
+    throw fail("writing", saved, true);
   }
   if (::fsync(fd) != 0) {
     const int saved = errno;

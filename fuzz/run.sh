@@ -8,7 +8,8 @@
 # the inputs of fixed findings) and the corpus grown in earlier runs
 # (BUILD/fuzz-corpus/NAME). Replaying starts from the seeds alone, with a
 # fixed random seed and a count instead of a clock, so that it tries the same
-# inputs on every machine: CI's smoke run can only fail on a change, never on luck.
+# inputs on every machine: CI's smoke run can only fail on a change, never on luck
+# (the import target's replays still differ with timing: docs/fuzzing.md).
 set -uo pipefail
 build=$1 limit=$2
 shift 2

@@ -105,11 +105,13 @@ TriMesh decode_mesh(const std::string& bytes) {
   std::int64_t counts[2] = {0, 0};
   RECOIL_CHECK(bytes.size() >= sizeof counts);
   std::memcpy(counts, bytes.data(), sizeof counts);
+  const size_t vertex_bytes = 3 * sizeof(double) * static_cast<size_t>(counts[0]);
+  const size_t triangle_bytes = 3 * sizeof(int) * static_cast<size_t>(counts[1]);
+  RECOIL_CHECK(counts[0] >= 0 && counts[1] >= 0 && bytes.size() == sizeof counts + vertex_bytes + triangle_bytes,
+               "mesh of " << bytes.size() << " bytes for " << counts[0] << " vertices and " << counts[1] << " triangles");
   TriMesh mesh;
   mesh.vertices.resize(counts[0], 3);
   mesh.triangles.resize(counts[1], 3);
-  const size_t vertex_bytes = sizeof(double) * mesh.vertices.size(), triangle_bytes = sizeof(int) * mesh.triangles.size();
-  RECOIL_CHECK(bytes.size() == sizeof counts + vertex_bytes + triangle_bytes, "mesh of " << bytes.size() << " bytes");
   if (vertex_bytes > 0) std::memcpy(mesh.vertices.data(), bytes.data() + sizeof counts, vertex_bytes);
   if (triangle_bytes > 0) std::memcpy(mesh.triangles.data(), bytes.data() + sizeof counts + vertex_bytes, triangle_bytes);
   return mesh;
@@ -160,7 +162,9 @@ TriMesh import_surface(const fs::path& path) {
   require_regular_file(path, "mesh file");
   check_declared_mesh_counts(path);
   // assimp reads tens of MiB a second; a reader still busy after 5 s plus 1 s per MiB is stuck in a loop.
-  const int cpu_seconds = 5 + static_cast<int>(std::min<std::uintmax_t>(fs::file_size(path) >> 20, 1 << 20));
+  std::error_code failed;  // only the time limit depends on the size
+  const std::uintmax_t mib = fs::file_size(path, failed) >> 20;
+  const int cpu_seconds = 5 + (failed ? 0 : static_cast<int>(std::min<std::uintmax_t>(mib, 1 << 20)));
   TriMesh merged = decode_mesh(read_in_child([&] { return encode_mesh(read_with_assimp(path)); }, path.string(),
                                              "the mesh reader (assimp)", cpu_seconds));
   for (int v = 0; v < merged.num_vertices(); ++v)

@@ -12,6 +12,8 @@
 #include <stdexcept>
 
 #include "core/error.h"
+#include "sim/geometry/mesh_import.h"
+#include "tests/test_support.h"
 
 namespace recoil::sim {
 namespace {
@@ -74,6 +76,25 @@ TEST(IsolatedReader, ChildMemoryIsNotTheCallers) {
   int value = 1;
   read_in_child([&] { value = 2; return std::string(); }, "in.obj", "the test reader", 5);
   EXPECT_EQ(value, 1);
+}
+
+// import_surface reads through a child: a crash while assimp reads is the file's bad luck, not the caller's.
+TEST(IsolatedReader, MeshImportReadsInAChild) {
+  set_reader_child_setup([] {
+    std::signal(SIGSEGV, SIG_DFL);
+    std::raise(SIGSEGV);
+  });
+  const std::string bunny = test::source_path("assets/meshes/bunny.obj").string();
+  try {
+    import_surface(bunny);
+    ADD_FAILURE() << "read although its reader crashed";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.kind(), ErrorKind::bad_input);
+    EXPECT_EQ(std::string(e.what()).rfind(bunny + ": the mesh reader (assimp) crashed reading this file", 0), 0u)
+        << e.what();
+  }
+  set_reader_child_setup(nullptr);
+  EXPECT_GT(import_surface(bunny).num_triangles(), 1000);
 }
 
 }  // namespace
