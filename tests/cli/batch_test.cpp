@@ -136,38 +136,51 @@ TEST(BatchCommand, KillNineAtSeveralMomentsLosesOnlyTheItemsInFlight) {
   };
   ASSERT_EQ(run_recoil(args("whole")).exit_code, 0);
 
+  // The items whose folder is complete (item.json in place).
+  const auto complete = [&] {
+    std::set<int> done;
+    for (int i = 0; i < 5; ++i)
+      if (fs::exists(dir / ("out/b" + std::to_string(i)) / "item.json")) done.insert(i);
+    return done;
+  };
+  const auto logged = [](const std::string& log) {
+    std::multiset<int> indices;
+    for (const json& e : item_events(log)) indices.insert(e["index"].get<int>());
+    return indices;
+  };
   // Killed with SIGKILL as soon as k items are complete (k = 1, 2, 3), then run to the end.
-  std::vector<std::string> logs;
+  // A killed run logs only items it completed itself, though maybe not all of
+  // them: the kill can land between an item's folder and its log line.
   for (int k = 1; k <= 3; ++k) {
+    const std::set<int> before = complete();
     const fs::path pid_file = dir / "pid", log = dir / ("run" + std::to_string(k) + ".log");
     write_text(dir / "start.sh", "'" RECOIL_BINARY "' " + args("out") + " </dev/null >/dev/null 2>" +
                                     shell_quote(log) + " &\necho $! > " + shell_quote(pid_file) + "\n");
     ASSERT_EQ(std::system(("sh " + shell_quote(dir / "start.sh")).c_str()), 0);
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
     const pid_t pid = std::stoi(file_bytes(pid_file));
-    const auto complete = [&] {
-      int n = 0;
-      for (int i = 0; i < 5; ++i) n += fs::exists(dir / ("out/b" + std::to_string(i)) / "item.json");
-      return n;
-    };
     const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(120);
-    while (complete() < k && std::chrono::steady_clock::now() < deadline)
+    while (static_cast<int>(complete().size()) < k && std::chrono::steady_clock::now() < deadline)
       std::this_thread::sleep_for(std::chrono::milliseconds(5));
-    ASSERT_GE(complete(), k);
+    ASSERT_GE(static_cast<int>(complete().size()), k);
     ::kill(pid, SIGKILL);
     ::waitpid(pid, nullptr, 0);
     std::this_thread::sleep_for(std::chrono::milliseconds(300));  // the orphaned item stops on its parent's death
-    logs.push_back(file_bytes(log));
+    const std::set<int> after = complete();
+    for (const int index : logged(file_bytes(log))) {
+      EXPECT_TRUE(after.count(index) && !before.count(index)) << "run " << k << " logged item " << index;
+      EXPECT_EQ(logged(file_bytes(log)).count(index), 1u) << "run " << k << " logged item " << index << " twice";
+    }
   }
+  // No item is run again once it was complete: the last run does exactly the rest.
+  const std::set<int> before_last = complete();
   const CommandResult last = run_recoil(args("out"));
   ASSERT_EQ(last.exit_code, 0) << last.err;
-  logs.push_back(last.err);
-
-  // No item is run again once it was complete: each index finishes in exactly one run.
-  std::multiset<int> finished;
-  for (const std::string& log : logs)
-    for (const json& e : item_events(log)) finished.insert(e["index"].get<int>());
-  EXPECT_EQ(finished, (std::multiset<int>{0, 1, 2, 3, 4}));
+  std::multiset<int> rest;
+  for (int i = 0; i < 5; ++i)
+    if (!before_last.count(i)) rest.insert(i);
+  EXPECT_EQ(logged(last.err), rest);
+  EXPECT_EQ(complete(), (std::set<int>{0, 1, 2, 3, 4}));
   const std::map<std::string, std::string> whole = frames_under(dir / "whole"), resumed = frames_under(dir / "out");
   EXPECT_GT(whole.size(), 5u);
   EXPECT_TRUE(whole == resumed) << whole.size() << " frames uninterrupted, " << resumed.size() << " after the kills";
