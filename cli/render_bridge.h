@@ -6,7 +6,9 @@
 
 namespace recoil::cli {
 
-// #V by 3 doubles -> #V*3 floats; triangles copied as they are.
+// #V by 3 doubles -> #V*3 floats; triangles copied as they are; the mesh's
+// look (materials, textures, vertex colours), if it has one, drawn instead of
+// `color` (which still colours the parts the file gave no colour).
 render::RenderMesh to_render_mesh(const sim::TriMesh& mesh, const render::Rgb& color, float opacity = 1.0f);
 
 // Replaces the positions of an already converted mesh (same vertex count).

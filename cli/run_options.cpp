@@ -30,7 +30,7 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
   if (given(o, "--color")) {
     const render::Rgb color = parse_color(o.render.color, "--color");
     for (SceneBody& body : scene.bodies)
-      if (!body.is_plane()) body.color = color;
+      if (!body.is_plane()) body.color = color, body.color_given = true;
   }
   if (given(o, "--camera-distance")) {
     // A camera standing at a given position has no distance to change.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 #include <map>
 #include <numbers>
 #include <optional>
@@ -184,6 +185,14 @@ struct BodiesSoFar {
   int mesh_bodies = 0;  // bodies other than planes, for the palette
 };
 
+// What of a mesh file's look could not be read (a missing texture): the body
+// is drawn without it, and the user is told once per file, even under -q.
+void warn_about_look(const fs::path& path, const sim::TriMesh& mesh) {
+  if (!mesh.look) return;
+  for (const std::string& warning : mesh.look->warnings)
+    std::cerr << "recoil: warning: " << path.string() << ": " << warning << "\n";
+}
+
 // A mesh file as read, cached unrotated (bodies may give it different "up"s).
 Geometry read_mesh_file(const JsonCursor& c, const fs::path& base_dir, MeshFiles& files) {
   const fs::path path = resolve_file(c, base_dir).lexically_normal();
@@ -197,6 +206,7 @@ Geometry read_mesh_file(const JsonCursor& c, const fs::path& base_dir, MeshFiles
       g.surface = sim::boundary_surface(g.tets);
     } else {
       g.surface = load_geometry(c, [&] { return sim::import_surface(path); });
+      warn_about_look(path, g.surface);
       g.open = !sim::compute_mesh_stats(g.surface).watertight;
     }
     if (g.surface.empty()) c.fail("holds no triangles: " + path.string());
@@ -310,6 +320,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
 
   if (body.has("color")) {
     out.color = parse_body_color(body.child("color"));
+    out.color_given = true;
   } else {
     out.color = palette_color(so_far.mesh_bodies++);
   }
@@ -410,6 +421,7 @@ void parse_bodies(const std::vector<JsonCursor>& bodies, const fs::path& base_di
     Geometry g;
     g.open = !sim::compute_mesh_stats(mesh).watertight;
     g.surface = std::move(mesh);
+    warn_about_look(path, g.surface);
     so_far.files.emplace(path, std::move(g));
   }
   scene.bodies.reserve(bodies.size());

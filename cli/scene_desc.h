@@ -29,6 +29,7 @@ struct SceneBody {
   std::optional<sim::BodyKind> kind;  // empty for a plane
   int index = 0;              // into world.planes, world.rigid_bodies or world.bodies (by kind)
   render::Rgb color{};        // sRGB
+  bool color_given = false;   // by the scene or --color: it replaces the mesh file's own look
   float opacity = 1.0f;
   std::string pointer;        // "/bodies/3", for messages
   bool open_mesh = false;     // from a surface file that is not watertight (inside/outside by winding number)

@@ -55,7 +55,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
     const SceneBody* body = scene.find(s.name);
     const render::Rgb color = body ? body->color : palette_color(static_cast<int>(i));
     const float opacity = body ? body->opacity : 1.0f;
-    sim::TriMesh mesh{s.positions, s.triangles};
+    sim::TriMesh mesh{s.positions, s.triangles, body && body->color_given ? nullptr : s.look};
     m_mesh_of_surface.push_back(static_cast<int>(m_render.meshes.size()));
     m_render.meshes.push_back(to_render_mesh(mesh, color, opacity));
     const sim::Aabb b = bounds_of(s.positions);

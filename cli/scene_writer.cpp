@@ -62,7 +62,8 @@ json body_json(const SceneBody& body, const sim::WorldDesc& world) {
     out["friction"] = friction_json(p.friction.static_coefficient, p.friction.kinetic_coefficient);
     return out;
   }
-  out["color"] = color_hex(body.color);
+  // A colour nobody chose stays out: the palette gives it again, and a mesh's own look is not overridden.
+  if (body.color_given) out["color"] = color_hex(body.color);
   out["opacity"] = shortest_double(body.opacity);
   if (body.mesh_file.empty()) {
     out["primitive"] = body.primitive;

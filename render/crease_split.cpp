@@ -36,7 +36,12 @@ class Corners {
 }  // namespace
 
 CreaseSplit split_creases(std::span<const float> positions, std::span<const std::uint32_t> indices,
-                          double crease_degrees) {
+                          double crease_degrees, std::span<const float> corner_keys, size_t key_stride) {
+  auto same_key = [&](std::uint32_t a, std::uint32_t b) {
+    if (key_stride == 0) return true;
+    return std::equal(corner_keys.begin() + a * key_stride, corner_keys.begin() + (a + 1) * key_stride,
+                      corner_keys.begin() + b * key_stride);
+  };
   const size_t faces = indices.size() / 3;
   std::vector<Eigen::Vector3f> normal(faces, Eigen::Vector3f::Zero());
   for (size_t f = 0; f < faces; ++f) {
@@ -83,8 +88,8 @@ CreaseSplit split_creases(std::span<const float> positions, std::span<const std:
       const Eigen::Vector3f& n2 = normal[uses[i + 1].corner_lo / 3];
       const bool degenerate = n1.isZero() || n2.isZero();
       if (degenerate || n1.dot(n2) >= cos_crease) {
-        corners.join(uses[i].corner_lo, uses[i + 1].corner_lo);
-        corners.join(uses[i].corner_hi, uses[i + 1].corner_hi);
+        if (same_key(uses[i].corner_lo, uses[i + 1].corner_lo)) corners.join(uses[i].corner_lo, uses[i + 1].corner_lo);
+        if (same_key(uses[i].corner_hi, uses[i + 1].corner_hi)) corners.join(uses[i].corner_hi, uses[i + 1].corner_hi);
       }
     }
     i = j;

@@ -22,9 +22,11 @@ struct CreaseSplit {
 
 // Two faces sharing an edge stay smooth across it when their normals differ
 // by at most `crease_degrees`; border and non-manifold edges are sharp.
-// positions: #V*3, indices: #F*3 (all < #V). Deterministic: render vertices
-// are numbered in order of their first corner.
+// Corners whose keys differ (`key_stride` floats per corner in `corner_keys`,
+// e.g. a colour and texture coordinates) are never joined either, so a UV
+// seam splits like a crease. positions: #V*3, indices: #F*3 (all < #V).
+// Deterministic: render vertices are numbered in order of their first corner.
 CreaseSplit split_creases(std::span<const float> positions, std::span<const std::uint32_t> indices,
-                          double crease_degrees);
+                          double crease_degrees, std::span<const float> corner_keys = {}, size_t key_stride = 0);
 
 }  // namespace recoil::render

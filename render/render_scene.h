@@ -3,18 +3,35 @@
 // the simulation's surfaces each frame; render/ knows nothing of physics.
 #include <array>
 #include <cstdint>
+#include <memory>
 #include <vector>
+
+#include "render/image.h"
 
 namespace recoil::render {
 
 // sRGB-encoded colour components in [0, 1], as users write them ("#d9a066").
 using Rgb = std::array<float, 3>;
 
+struct RenderMaterial {
+  std::shared_ptr<const Image> texture;  // base-colour map (sRGB); null: none
+};
+
+// How a mesh is drawn when it is more than one colour, per triangle corner.
+// Shared and never changed once made, so frames compare it by pointer.
+struct RenderLook {
+  std::vector<float> corner_colors;  // #F*9 linear RGB; replaces RenderMesh::color
+  std::vector<float> corner_uvs;     // #F*6 texture coordinates (v up the image, as OpenGL); empty: no textures
+  std::vector<std::uint32_t> triangle_materials;  // #F indices into materials
+  std::vector<RenderMaterial> materials;
+};
+
 struct RenderMesh {
   std::vector<float> positions;        // #V*3 floats, world space, metres
   std::vector<std::uint32_t> indices;  // #F*3, counter-clockwise seen from outside
   Rgb color = {0.85f, 0.63f, 0.40f};
   float opacity = 1.0f;                // < 1: blended back to front
+  std::shared_ptr<const RenderLook> look;  // null: `color` everywhere
 };
 
 struct RenderScene {

@@ -32,6 +32,7 @@ int shadow_map_size(const RenderSettings& s) {
 }
 
 constexpr GLenum kShadowUnit = GL_TEXTURE0;
+constexpr GLenum kMaterialUnit = GL_TEXTURE1;
 constexpr float kOpaque = 0.999f;  // opacity at or above this draws in the opaque pass
 
 // Axis-aligned bounds of a mesh's positions (#V*3); empty when lo > hi.
@@ -117,13 +118,19 @@ struct Frame {
   std::array<float, 3> background;  // linear
 };
 
+// The mesh programs of one frame (with or without shadows), lit alike.
+struct MeshPrograms {
+  ShaderProgram* plain;
+  ShaderProgram* textured;
+};
+
 struct Renderer::Impl {
   // Declared first so it is destroyed last, after every GL object.
   GlContext context;
   RenderTarget target;
   ShadowMap shadow_map;
-  // [0] without, [1] with the key light's shadow lookups.
-  std::array<ShaderProgram, 2> mesh_programs;
+  // Index: shadows + 2 * textured (the key light's shadow lookups, a base-colour map).
+  std::array<ShaderProgram, 4> mesh_programs;
   std::array<ShaderProgram, 4> ground_programs;  // index: shadows + 2 * grid
   ShaderProgram depth_program;
   ShaderProgram wire_program;
@@ -135,8 +142,10 @@ struct Renderer::Impl {
   explicit Impl(const RenderSettings& s)
       : target(s.width, s.height, s.msaa),
         shadow_map(shadow_map_size(s)),
-        mesh_programs{ShaderProgram("mesh", shaders::mesh_vertex(), shaders::mesh_fragment(false)),
-                      ShaderProgram("mesh+shadow", shaders::mesh_vertex(), shaders::mesh_fragment(true))},
+        mesh_programs{ShaderProgram("mesh", shaders::mesh_vertex(), shaders::mesh_fragment(false, false)),
+                      ShaderProgram("mesh+shadow", shaders::mesh_vertex(), shaders::mesh_fragment(true, false)),
+                      ShaderProgram("mesh+texture", shaders::mesh_vertex(), shaders::mesh_fragment(false, true)),
+                      ShaderProgram("mesh+shadow+texture", shaders::mesh_vertex(), shaders::mesh_fragment(true, true))},
         ground_programs{
             ShaderProgram("ground", shaders::ground_vertex(), shaders::ground_fragment(false, false)),
             ShaderProgram("ground+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, false)),
@@ -151,10 +160,10 @@ struct Renderer::Impl {
   void set_common(ShaderProgram& p, const Frame& frame);
   void set_lighting(ShaderProgram& p, const Frame& frame, const Camera& camera);
   void draw_mesh(const RenderSettings& settings, const RenderMesh& mesh, const MeshBuffers& buffers,
-                 ShaderProgram& program);
+                 const MeshPrograms& programs);
   void draw_ground(const RenderSettings& settings, const RenderScene& scene, const Frame& frame);
   void draw_transparent(const RenderSettings& settings, const RenderScene& scene, const Camera& camera,
-                        ShaderProgram& program);
+                        const MeshPrograms& programs);
 };
 
 Renderer::Renderer(const RenderSettings& settings) : m_settings(settings) {
@@ -262,7 +271,7 @@ void Renderer::Impl::set_lighting(ShaderProgram& p, const Frame& frame, const Ca
 }
 
 void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh& mesh, const MeshBuffers& buffers,
-                               ShaderProgram& program) {
+                               const MeshPrograms& programs) {
   const std::array<float, 3> albedo = srgb_to_linear(mesh.color);
   const float opacity = std::clamp(mesh.opacity, 0.0f, 1.0f);
   if (settings.wireframe) {
@@ -270,10 +279,26 @@ void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh&
     glEnable(GL_POLYGON_OFFSET_FILL);
     glPolygonOffset(1.0f, 1.0f);
   }
-  program.use();
-  set(program, "u_albedo", Eigen::Vector3f(albedo[0], albedo[1], albedo[2]));
-  set(program, "u_opacity", opacity);
-  buffers.draw();
+  if (buffers.groups().empty()) {
+    programs.plain->use();
+    set(*programs.plain, "u_albedo", Eigen::Vector3f(albedo[0], albedo[1], albedo[2]));
+    set(*programs.plain, "u_opacity", opacity);
+    buffers.draw();
+  } else {
+    // The look's vertex colours are the whole albedo.
+    for (const MeshBuffers::Group& group : buffers.groups()) {
+      ShaderProgram& program = group.texture ? *programs.textured : *programs.plain;
+      program.use();
+      set(program, "u_albedo", Eigen::Vector3f(1.0f, 1.0f, 1.0f));
+      set(program, "u_opacity", opacity);
+      if (group.texture) {
+        glActiveTexture(kMaterialUnit);
+        glBindTexture(GL_TEXTURE_2D, group.texture);
+        set(program, "u_texture", static_cast<int>(kMaterialUnit - GL_TEXTURE0));
+      }
+      buffers.draw(group);
+    }
+  }
   if (settings.wireframe) {
     glDisable(GL_POLYGON_OFFSET_FILL);
     wire_program.use();
@@ -312,7 +337,7 @@ void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderSce
 }
 
 void Renderer::Impl::draw_transparent(const RenderSettings& settings, const RenderScene& scene,
-                                      const Camera& camera, ShaderProgram& program) {
+                                      const Camera& camera, const MeshPrograms& programs) {
   // Farthest first (by bounding-box centre depth, ties by index), without
   // depth writes; each mesh draws its back faces, then its front faces,
   // which orders a convex body's own layers correctly.
@@ -331,9 +356,9 @@ void Renderer::Impl::draw_transparent(const RenderSettings& settings, const Rend
   glEnable(GL_CULL_FACE);
   for (size_t i : transparent_order) {
     glCullFace(GL_FRONT);
-    draw_mesh(settings, scene.meshes[i], meshes[i], program);
+    draw_mesh(settings, scene.meshes[i], meshes[i], programs);
     glCullFace(GL_BACK);
-    draw_mesh(settings, scene.meshes[i], meshes[i], program);
+    draw_mesh(settings, scene.meshes[i], meshes[i], programs);
   }
   glDisable(GL_CULL_FACE);
   glDepthMask(GL_TRUE);
@@ -359,8 +384,10 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   }
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   shadow_map.bind_texture(kShadowUnit);
-  ShaderProgram& mesh_program = mesh_programs[frame.shadows ? 1 : 0];
-  set_lighting(mesh_program, frame, camera);
+  const MeshPrograms programs{&mesh_programs[frame.shadows ? 1 : 0], &mesh_programs[frame.shadows ? 3 : 2]};
+  set_lighting(*programs.plain, frame, camera);
+  if (std::any_of(meshes.begin(), meshes.end(), [](const MeshBuffers& m) { return !m.groups().empty(); }))
+    set_lighting(*programs.textured, frame, camera);
   if (settings.wireframe) {
     wire_program.use();
     set(wire_program, "u_view_projection", frame.view_projection);
@@ -372,7 +399,7 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   for (size_t i = 0; i < meshes.size(); ++i) {
     if (scene.meshes[i].opacity < kOpaque) continue;
     set_culling(meshes[i].closed());
-    draw_mesh(settings, scene.meshes[i], meshes[i], mesh_program);
+    draw_mesh(settings, scene.meshes[i], meshes[i], programs);
   }
   set_culling(false);
 
@@ -381,7 +408,7 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   // it does not blend, so anything below the floor stays hidden even where
   // the floor has faded out.
   if (scene.ground) draw_ground(settings, scene, frame);
-  draw_transparent(settings, scene, camera, mesh_program);
+  draw_transparent(settings, scene, camera, programs);
 
   target.read(image);
   if (settings.transparent_background) unpremultiply_srgb(image);

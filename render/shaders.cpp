@@ -75,34 +75,49 @@ std::string mesh_vertex() {
   return std::string(kHeader) + R"(
 layout(location = 0) in vec3 a_position;
 layout(location = 1) in vec3 a_normal;
+layout(location = 2) in vec3 a_color;  // linear; white where the mesh has one colour (u_albedo)
+layout(location = 3) in vec2 a_uv;
 uniform mat4 u_view_projection;
 uniform mat4 u_light_matrix;     // world to shadow-map [0,1]^3
 uniform float u_normal_offset;   // metres; pushes lookups off the surface against acne
 out vec3 v_world;
 out vec3 v_normal;
 out vec4 v_shadow;
+out vec3 v_color;
+out vec2 v_uv;
 void main() {
   v_world = a_position;
   v_normal = a_normal;
+  v_color = a_color;
+  v_uv = a_uv;
   v_shadow = u_light_matrix * vec4(a_position + u_normal_offset * a_normal, 1.0);
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 }
 )";
 }
 
-std::string mesh_fragment(bool shadows) {
-  return fragment_header(shadows) + kShadow + kStudio + R"(
+std::string mesh_fragment(bool shadows, bool textured) {
+  return fragment_header(shadows) + (textured ? "#define TEXTURED 1\n" : "") + kShadow + kStudio + R"(
 in vec3 v_world;
 in vec3 v_normal;
 in vec4 v_shadow;
+in vec3 v_color;
+in vec2 v_uv;
 uniform vec3 u_albedo;     // linear
 uniform float u_opacity;
+#ifdef TEXTURED
+uniform sampler2D u_texture;  // sRGB texels read as linear; rows stored top first, so v runs down
+#endif
 out vec4 o_color;
 void main() {
   vec3 n = normalize(v_normal);
   // Open or inward-facing surfaces are lit from the side we see.
   if (!gl_FrontFacing) n = -n;
-  vec3 color = studio_light(u_albedo, n, v_world, key_visibility(v_shadow));
+  vec3 albedo = u_albedo * v_color;
+#ifdef TEXTURED
+  albedo *= texture(u_texture, vec2(v_uv.x, 1.0 - v_uv.y)).rgb;
+#endif
+  vec3 color = studio_light(albedo, n, v_world, key_visibility(v_shadow));
   o_color = vec4(color * u_opacity, u_opacity);
 }
 )";

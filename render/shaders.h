@@ -7,10 +7,11 @@
 
 namespace recoil::render::shaders {
 
-// Meshes: position (location 0) and normal (location 1), studio lighting;
-// `shadows` compiles the key light's shadow-map lookups in.
+// Meshes: position (location 0), normal (1), linear colour multiplying the
+// albedo (2) and texture coordinates (3), studio lighting; `shadows` compiles
+// the key light's shadow-map lookups in, `textured` a base-colour map's.
 std::string mesh_vertex();
-std::string mesh_fragment(bool shadows);
+std::string mesh_fragment(bool shadows, bool textured);
 // The ground plane: lit like a matte mesh plus the grid and the distance fade.
 std::string ground_vertex();
 std::string ground_fragment(bool shadows, bool grid);

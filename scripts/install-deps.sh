@@ -14,6 +14,7 @@ packages=(
   libassimp-dev          # assimp 5: mesh import
   libmeshoptimizer-dev   # meshoptimizer: collision surfaces simplified from fine meshes
   libpng-dev             # PNG read/write
+  libstb-dev             # stb_image: the textures of imported meshes (PNG, JPEG, TGA, BMP)
   libfreetype-dev        # the labels of batch contact sheets ...
   fonts-dejavu-core      # ... drawn in DejaVu Sans
   libcli11-dev           # command line

@@ -272,6 +272,7 @@ std::vector<BodySurface> World::surfaces() const {
     const bool own_render = !body.render_surface.empty();
     embedded_positions(own_render ? body.render_embedding : body.embedding, body.rest.tets, nodes, s.positions);
     s.triangles = own_render ? body.render_surface.triangles : body.surface.triangles;
+    s.look = own_render ? body.render_surface.look : body.surface.look;
     out.push_back(std::move(s));
   }
   for (const RigidBody& body : m_rigid) {
@@ -281,6 +282,7 @@ std::vector<BodySurface> World::surfaces() const {
     const bool own_render = body.render_triangles.rows() > 0;
     world_points(own_render ? body.render_local : body.local, body.pose, s.positions);
     s.triangles = own_render ? body.render_triangles : body.triangles;
+    s.look = body.look;
     out.push_back(std::move(s));
   }
   return out;

@@ -93,6 +93,7 @@ struct BodySurface {
   BodyKind kind = BodyKind::deformable;
   Points positions;     // #V by 3, world space, current
   Triangles triangles;  // #F by 3
+  std::shared_ptr<const SurfaceLook> look;  // how `triangles` are drawn, per triangle; null: in the body's colour
 };
 
 struct BodyStats {

@@ -63,7 +63,7 @@ std::optional<SurfaceOverlap> deepest_overlap(const std::vector<CollisionSurface
       if (!boxes_overlap(boxes[a], boxes[b])) continue;
       const CollisionSurface& inner = surfaces[a];
       const CollisionSurface& outer = surfaces[b];
-      if (!trees[b]) trees[b] = std::make_unique<WindingNumberTree>(TriMesh{outer.x0, outer.triangles});
+      if (!trees[b]) trees[b] = std::make_unique<WindingNumberTree>(TriMesh{outer.x0, outer.triangles, nullptr});
       for (Eigen::Index v = 0; v < inner.x0.rows() && probes < kDepthProbes; ++v) {
         const Eigen::Vector3d p = inner.x0.row(v).transpose();
         if ((p.array() < boxes[b].min.array()).any() || (p.array() > boxes[b].max.array()).any()) continue;

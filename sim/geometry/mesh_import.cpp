@@ -1,4 +1,4 @@
-// The only file in recoil that includes assimp.
+// With look_import.cpp, the only files in recoil that include assimp.
 #include "sim/geometry/mesh_import.h"
 
 #include <assimp/postprocess.h>
@@ -18,6 +18,7 @@
 #include "core/error.h"
 #include "core/regular_file.h"
 #include "sim/geometry/isolated_reader.h"
+#include "sim/geometry/look_import.h"
 #include "sim/geometry/mesh_header.h"
 
 namespace recoil::sim {
@@ -31,10 +32,19 @@ Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
   return out;
 }
 
+// What collect() gathers: the merged surface and, per triangle, its look.
+struct Gathered {
+  TriMesh mesh;
+  SurfaceLook look;
+  bool any_uv = false, any_color = false;  // the arrays below are filled only once a mesh has them
+  std::vector<float> uv, color;
+};
+
 // Appends the triangles of every mesh under `node`, transformed to the root.
-void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent, TriMesh& out, int depth) {
+void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent, Gathered& out, int depth) {
   if (depth > 256) return;  // a cyclic or absurdly deep node graph from a broken file
   const Eigen::Matrix4d world = parent * to_eigen(node.mTransformation);
+  const bool mirrored = world.topLeftCorner<3, 3>().determinant() < 0;
   for (unsigned i = 0; i < node.mNumMeshes; ++i) {
     if (node.mMeshes[i] >= scene.mNumMeshes) continue;
     const aiMesh& mesh = *scene.mMeshes[node.mMeshes[i]];
@@ -54,16 +64,32 @@ void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& pa
       bool in_range = true;
       for (unsigned k = 0; k < face.mNumIndices; ++k) in_range &= face.mIndices[k] < mesh.mNumVertices;
       if (!in_range) continue;
-      for (unsigned k = 1; k + 1 < face.mNumIndices; ++k)
-        fans.push_back({static_cast<int>(face.mIndices[0]), static_cast<int>(face.mIndices[k]),
-                        static_cast<int>(face.mIndices[k + 1])});
+      for (unsigned k = 1; k + 1 < face.mNumIndices; ++k) {
+        std::array<int, 3> fan = {static_cast<int>(face.mIndices[0]), static_cast<int>(face.mIndices[k]),
+                                  static_cast<int>(face.mIndices[k + 1])};
+        if (mirrored) std::swap(fan[1], fan[2]);
+        fans.push_back(fan);
+      }
     }
     const int kept = static_cast<int>(fans.size());
     part.triangles.resize(kept, 3);
     for (int f = 0; f < kept; ++f) part.triangles.row(f) << fans[f][0], fans[f][1], fans[f][2];
-    part.triangles.conservativeResize(kept, 3);
-    if (world.topLeftCorner<3, 3>().determinant() < 0) part.triangles.col(1).swap(part.triangles.col(2));
-    append(out, part);
+
+    // The look of each corner: UV channel 0, colour set 0, the mesh's material.
+    const size_t before = out.look.triangle_material.size();
+    const int material = mesh.mMaterialIndex < scene.mNumMaterials ? static_cast<int>(mesh.mMaterialIndex) : -1;
+    out.look.triangle_material.insert(out.look.triangle_material.end(), fans.size(), material);
+    const aiVector3D* uv = mesh.mTextureCoords[0];
+    const aiColor4D* color = mesh.mColors[0];
+    if (uv && !out.any_uv) out.uv.assign(6 * before, 0.0f), out.any_uv = true;
+    if (color && !out.any_color) out.color.assign(9 * before, 1.0f), out.any_color = true;
+    for (const std::array<int, 3>& fan : fans)
+      for (int v : fan) {
+        if (out.any_uv) out.uv.insert(out.uv.end(), {uv ? uv[v].x : 0.0f, uv ? uv[v].y : 0.0f});
+        if (out.any_color)
+          out.color.insert(out.color.end(), {color ? color[v].r : 1.0f, color ? color[v].g : 1.0f, color ? color[v].b : 1.0f});
+      }
+    append(out.mesh, part);
   }
   for (unsigned c = 0; c < node.mNumChildren; ++c)
     if (node.mChildren[c]) collect(scene, *node.mChildren[c], world, out, depth + 1);
@@ -82,12 +108,28 @@ TriMesh read_with_assimp(const fs::path& path) {
     if (reason.empty()) reason = "not a mesh file assimp can read";
     throw bad_input(path.string() + ": cannot read mesh: " + reason);
   }
-  TriMesh merged;
-  collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), merged, 0);
-  return merged;
+  Gathered gathered;
+  collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), gathered, 0);
+  SurfaceLook& look = gathered.look;
+  look.materials = read_materials(*scene, path, look.warnings);
+  // Meshes without a material of their own draw in the body's colour: one
+  // more material with none.
+  const auto plain = static_cast<std::int32_t>(look.materials.size());
+  bool any_plain = false;
+  for (std::int32_t& m : look.triangle_material)
+    if (m < 0) m = plain, any_plain = true;
+  if (any_plain) look.materials.emplace_back();
+  look.corner_uv = std::move(gathered.uv);
+  look.corner_color = std::move(gathered.color);
+  // sRGB 8-bit vertex colours (PLY's) reach us as bytes / 255; glTF's COLOR_0
+  // is linear by its specification. Both are taken as linear here.
+  if (look.draws_anything() || !look.warnings.empty())
+    gathered.mesh.look = std::make_shared<const SurfaceLook>(std::move(look));
+  return gathered.mesh;
 }
 
-// The mesh as bytes: #V and #F (int64), then the vertex rows (double) and the triangle rows (int).
+// The mesh as bytes: #V and #F (int64), the vertex rows (double), the
+// triangle rows (int), whether a look follows (one byte), and the look.
 std::string encode_mesh(const TriMesh& mesh) {
   const std::int64_t counts[2] = {mesh.vertices.rows(), mesh.triangles.rows()};
   std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
@@ -98,6 +140,8 @@ std::string encode_mesh(const TriMesh& mesh) {
   if (mesh.triangles.size() > 0)
     std::memcpy(bytes.data() + bytes.size() - sizeof(int) * mesh.triangles.size(), mesh.triangles.data(),
                 sizeof(int) * mesh.triangles.size());
+  bytes.push_back(mesh.look ? 1 : 0);
+  if (mesh.look) encode_look(*mesh.look, bytes);
   return bytes;
 }
 
@@ -107,13 +151,20 @@ TriMesh decode_mesh(const std::string& bytes) {
   std::memcpy(counts, bytes.data(), sizeof counts);
   const size_t vertex_bytes = 3 * sizeof(double) * static_cast<size_t>(counts[0]);
   const size_t triangle_bytes = 3 * sizeof(int) * static_cast<size_t>(counts[1]);
-  RECOIL_CHECK(counts[0] >= 0 && counts[1] >= 0 && bytes.size() == sizeof counts + vertex_bytes + triangle_bytes,
+  RECOIL_CHECK(counts[0] >= 0 && counts[1] >= 0 && bytes.size() > sizeof counts + vertex_bytes + triangle_bytes,
                "mesh of " << bytes.size() << " bytes for " << counts[0] << " vertices and " << counts[1] << " triangles");
   TriMesh mesh;
   mesh.vertices.resize(counts[0], 3);
   mesh.triangles.resize(counts[1], 3);
   if (vertex_bytes > 0) std::memcpy(mesh.vertices.data(), bytes.data() + sizeof counts, vertex_bytes);
   if (triangle_bytes > 0) std::memcpy(mesh.triangles.data(), bytes.data() + sizeof counts + vertex_bytes, triangle_bytes);
+  size_t offset = sizeof counts + vertex_bytes + triangle_bytes;
+  if (bytes[offset++] != 0) {
+    SurfaceLook look = decode_look(bytes, offset);
+    RECOIL_CHECK(look.num_triangles() == mesh.num_triangles(), "look of " << look.num_triangles() << " triangles");
+    mesh.look = std::make_shared<const SurfaceLook>(std::move(look));
+  }
+  RECOIL_CHECK(offset == bytes.size(), "mesh answer has " << bytes.size() - offset << " bytes after the look");
   return mesh;
 }
 
@@ -130,11 +181,13 @@ TriMesh weld_and_clean(const TriMesh& mesh) {
     remap[v] = it->second;
   }
   std::vector<std::array<int, 3>> faces;
+  std::vector<int> kept_faces;
   for (int f = 0; f < mesh.num_triangles(); ++f) {
     const int a = remap[mesh.triangles(f, 0)], b = remap[mesh.triangles(f, 1)], c = remap[mesh.triangles(f, 2)];
     if (a == b || b == c || a == c) continue;
     if ((kept_points[b] - kept_points[a]).cross(kept_points[c] - kept_points[a]).squaredNorm() == 0.0) continue;
     faces.push_back({a, b, c});
+    kept_faces.push_back(f);
   }
   // Compact away vertices no triangle uses, keeping first-use order stable.
   std::vector<int> compact(kept_points.size(), -1);
@@ -150,6 +203,7 @@ TriMesh weld_and_clean(const TriMesh& mesh) {
   out.vertices.resize(used, 3);
   for (size_t v = 0; v < compact.size(); ++v)
     if (compact[v] >= 0) out.vertices.row(compact[v]) = kept_points[v].transpose();
+  if (mesh.look) out.look = std::make_shared<const SurfaceLook>(select_triangles(*mesh.look, kept_faces));
   return out;
 }
 

@@ -1,5 +1,5 @@
 #pragma once
-// Surface import through assimp (mesh_import.cpp is the only includer of assimp).
+// Surface import through assimp (mesh_import.cpp and look_import.cpp are its only includers).
 #include <filesystem>
 
 #include "sim/geometry/tri_mesh.h"
@@ -10,7 +10,10 @@ namespace recoil::sim {
 // every mesh of the file is placed under its node transforms and merged,
 // polygons are triangulated, points and lines dropped, vertices at the same
 // position welded (so a surface split by normals or UV seams is closed again)
-// and degenerate triangles dropped.
+// and degenerate triangles dropped. The file's materials, base-colour
+// textures, UVs and vertex colours come along as the mesh's look
+// (surface_look.h), per triangle corner, so welding loses none of them; a
+// texture that cannot be read is a warning in the look, not an error.
 // assimp reads in a child process (isolated_reader.h), so a file that crashes
 // it is a bad file like any other. Throws recoil::Error(bad_input) naming the
 // file when it cannot be read or holds no triangles.

@@ -14,7 +14,10 @@ void transform_in_place(TriMesh& mesh, const Eigen::Matrix3d& rotation,
     const Eigen::Vector3d p = mesh.vertices.row(i).transpose();
     mesh.vertices.row(i) = (rotation * scale.cwiseProduct(p) + translation).transpose();
   }
-  if (scale.prod() < 0.0) mesh.triangles.col(1).swap(mesh.triangles.col(2));
+  if (scale.prod() < 0.0) {
+    mesh.triangles.col(1).swap(mesh.triangles.col(2));
+    if (mesh.look) mesh.look = std::make_shared<const SurfaceLook>(with_swapped_corners(*mesh.look));
+  }
 }
 
 void append(TriMesh& mesh, const TriMesh& other) {
@@ -24,6 +27,7 @@ void append(TriMesh& mesh, const TriMesh& other) {
   mesh.vertices.bottomRows(other.num_vertices()) = other.vertices;
   mesh.triangles.conservativeResize(f0 + other.num_triangles(), 3);
   mesh.triangles.bottomRows(other.num_triangles()) = other.triangles.array() + v0;
+  mesh.look.reset();
 }
 
 }  // namespace recoil::sim

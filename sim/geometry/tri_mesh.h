@@ -3,6 +3,9 @@
 // primitives, rendering hand-off and collision surfaces.
 #include <Eigen/Core>
 #include <limits>
+#include <memory>
+
+#include "sim/geometry/surface_look.h"
 
 namespace recoil::sim {
 
@@ -14,6 +17,9 @@ using Triangles = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;
 struct TriMesh {
   Points vertices;       // #V by 3, metres
   Triangles triangles;   // #F by 3, counter-clockwise seen from outside
+  // How an imported surface is drawn, one entry per triangle; null for
+  // surfaces that are not drawn as imported (primitives, collision copies).
+  std::shared_ptr<const SurfaceLook> look;
 
   int num_vertices() const { return static_cast<int>(vertices.rows()); }
   int num_triangles() const { return static_cast<int>(triangles.rows()); }
@@ -34,12 +40,13 @@ Aabb bounding_box(const TriMesh& mesh);
 // Row i of a #V by 3 point list as a column vector.
 inline Eigen::Vector3d point_at(const Points& points, int i) { return points.row(i).transpose(); }
 
-// Applies p -> R * (s .* p) + t to every vertex; flips winding when the scale
-// has a negative determinant so triangles stay outward-facing.
+// Applies p -> R * (s .* p) + t to every vertex; flips winding (and the
+// look's corners) when the scale has a negative determinant so triangles stay
+// outward-facing.
 void transform_in_place(TriMesh& mesh, const Eigen::Matrix3d& rotation,
                         const Eigen::Vector3d& scale, const Eigen::Vector3d& translation);
 
-// Appends `other` to `mesh`, re-indexing its triangles.
+// Appends `other` to `mesh`, re-indexing its triangles; the result has no look.
 void append(TriMesh& mesh, const TriMesh& other);
 
 }  // namespace recoil::sim

@@ -44,6 +44,7 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
   TriMesh mesh = desc.mesh;
   transform_in_place(mesh, desc.transform.rotation_matrix(), desc.transform.scale, desc.transform.position);
   body.triangles = mesh.triangles;
+  body.look = mesh.look;
 
   Eigen::Vector3d reference = desc.transform.position;
   if (desc.kind == BodyKind::rigid) {

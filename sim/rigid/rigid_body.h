@@ -38,6 +38,7 @@ struct RigidBody {
   // copy of it (empty otherwise: local/triangles are also what is drawn).
   Points render_local;
   Triangles render_triangles;
+  std::shared_ptr<const SurfaceLook> look;  // of what is drawn (render_triangles, else triangles); null: plain
   double collision_deviation = 0.0;  // m: the outward offset of a simplified collision surface
   double mass = 0.0;                                      // kg (dynamic only)
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();      // kg m^2, body frame, about the centre of mass

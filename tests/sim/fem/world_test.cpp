@@ -159,7 +159,7 @@ TEST(World, TransformMassAndSurfaces) {
   ASSERT_EQ(surfaces.size(), 1u);
   EXPECT_EQ(surfaces[0].name, "torus");
   EXPECT_LT((surfaces[0].positions - expected.vertices).cwiseAbs().maxCoeff(), 1e-9);
-  const Aabb box = bounding_box(TriMesh{surfaces[0].positions, surfaces[0].triangles});
+  const Aabb box = bounding_box(TriMesh{surfaces[0].positions, surfaces[0].triangles, nullptr});
   EXPECT_NEAR(box.extent().x(), 2 * 2 * 0.7, 0.05);  // major diameter along x, scaled
   EXPECT_NEAR(box.extent().y(), 2 * 0.7, 0.05);      // rotated into y
   EXPECT_NEAR(box.extent().z(), 2 * 0.2, 0.01);      // tube thickness along z
