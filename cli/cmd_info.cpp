@@ -27,6 +27,40 @@ nlohmann::json to_json(const sim::Aabb& box) {
   return {{"min", {box.min.x(), box.min.y(), box.min.z()}}, {"max", {box.max.x(), box.max.y(), box.max.z()}}};
 }
 
+// What the renderer draws of the file's own look: the materials its
+// triangles use, their textures, UVs and vertex colours; null without one.
+nlohmann::json look_json(const sim::TriMesh& mesh) {
+  if (!mesh.look || (!mesh.look->draws_anything() && mesh.look->warnings.empty())) return nullptr;
+  const sim::SurfaceLook& look = *mesh.look;
+  std::vector<char> used(look.materials.size(), 0);
+  for (int m : look.triangle_material) used[static_cast<size_t>(m)] = 1;
+  nlohmann::json materials = nlohmann::json::array();
+  for (size_t m = 0; m < look.materials.size(); ++m) {
+    if (!used[m]) continue;
+    const sim::LookMaterial& material = look.materials[m];
+    nlohmann::json entry = {{"name", material.name}};
+    entry["color"] = material.has_color ? nlohmann::json(material.color) : nlohmann::json(nullptr);
+    entry["texture"] = material.texture ? nlohmann::json{{"width", material.texture->width}, {"height", material.texture->height}}
+                                        : nlohmann::json(nullptr);
+    materials.push_back(entry);
+  }
+  return {{"materials", materials},
+          {"uvs", !look.corner_uv.empty()},
+          {"vertex_colors", !look.corner_color.empty()},
+          {"warnings", look.warnings}};
+}
+
+std::string look_text(const nlohmann::json& look) {
+  if (look.is_null()) return "none (drawn in the body's colour)";
+  int textured = 0;
+  for (const nlohmann::json& m : look["materials"]) textured += !m["texture"].is_null();
+  std::string text = std::to_string(look["materials"].size()) + " material" + (look["materials"].size() == 1 ? "" : "s");
+  if (textured > 0) text += ", " + std::to_string(textured) + " textured";
+  if (look["vertex_colors"].get<bool>()) text += ", vertex colours";
+  for (const nlohmann::json& w : look["warnings"]) text += "\n  warning      " + w.get<std::string>();
+  return text;
+}
+
 int run_info(const InfoOptions& options, bool resolution_given) {
   if (std::filesystem::path(options.path).extension() == ".json") {
     if (resolution_given) throw bad_input("--resolution applies to a mesh; a scene gives each body's tets.resolution");
@@ -63,8 +97,10 @@ int run_info(const InfoOptions& options, bool resolution_given) {
                           {"bounds", to_json(stats.bounds)},
                           {"area", stats.area},
                           {"volume", stats.watertight ? nlohmann::json(stats.volume) : nlohmann::json(nullptr)},
-                          {"tetrahedra", tetrahedra}};
-    std::cout << out.dump(2) << "\n";
+                          {"tetrahedra", tetrahedra},
+                          {"look", look_json(mesh)}};
+    // Material names come from the file as bytes; invalid UTF-8 is shown as U+FFFD.
+    std::cout << out.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) << "\n";
     return 0;
   }
   std::ostringstream text;
@@ -90,6 +126,7 @@ int run_info(const InfoOptions& options, bool resolution_given) {
          << options.resolution << " (cells of " << lattice.cell_size << " m)\n";
   else
     text << "  tetrahedra   - (" << no_tets << ")\n";
+  text << "  look         " << look_text(look_json(mesh)) << "\n";
   std::cout << text.str();
   return 0;
 }

@@ -32,6 +32,10 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
       ->group(group);
   command.add_option("--png-level", options.png_level, "PNG compression 0 (fastest) to 9 (smallest)")
       ->check(CLI::Range(0, 9))->group(group)->capture_default_str();
+  command.add_option("--gl", options.gl,
+                     "OpenGL backend: osmesa (software), egl (Mesa's surfaceless EGL: llvmpipe, or the GPU of a "
+                     "render node) or auto (OSMesa where it works, else EGL); both draw identical frames on llvmpipe")
+      ->check(CLI::IsMember({"auto", "osmesa", "egl"}))->group(group)->capture_default_str();
 }
 
 render::Rgb parse_color(const std::string& text, const std::string& what) {
@@ -58,6 +62,9 @@ render::RenderSettings to_render_settings(const RenderOptions& options) {
   if (options.background == "transparent") settings.transparent_background = true;
   else settings.background = parse_color(options.background, "--background");
   if (!kFpsRange.contains(options.fps)) throw bad_input("--fps: must be " + kFpsRange.describe());
+  const std::optional<render::GlBackend> gl = render::parse_gl_backend(options.gl);
+  if (!gl) throw bad_input("--gl: expected auto, osmesa or egl, got '" + options.gl + "'");
+  settings.gl = *gl;
   return settings;
 }
 

@@ -20,10 +20,11 @@ struct RenderOptions {
   std::string color;                    // #rrggbb, empty: the default palette
   double camera_distance = 0.0;         // metres from the target; 0: fit the scene
   int png_level = 1;
+  std::string gl = "auto";              // the OpenGL backend: auto, osmesa or egl (a property of the machine, not the scene)
 };
 
 // Adds --resolution, --fps, --msaa, --no-shadows, --background, --wireframe,
-// --color, --camera-distance, --png-level to `command`, in a "Rendering" group.
+// --color, --camera-distance, --png-level, --gl to `command`, in a "Rendering" group.
 void add_render_options(CLI::App& command, RenderOptions& options);
 
 // Validated settings; throws recoil::Error(bad_input) naming the option.

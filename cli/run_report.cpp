@@ -51,6 +51,10 @@ SolveQuality RunReport::solve_quality(double margin) const {
 
 void RunReport::add_frame(const FrameTimes& times) { timings.render += times.render; }
 
+void RunReport::set_gl(const std::string& backend, const std::string& renderer) {
+  m_head["gl"] = {{"backend", backend}, {"renderer", renderer}};
+}
+
 void RunReport::finish(const sim::World& world, const RunResult& result, double total_ms) {
   timings.total = total_ms;
   const sim::WorldCounters& c = world.counters();

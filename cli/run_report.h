@@ -35,6 +35,8 @@ class RunReport {
   RunReport(const RunJob& job, const SceneDesc& scene);
   void add_step(const sim::StepReport& report);
   void add_frame(const FrameTimes& times);
+  // The OpenGL backend that drew the frames and its GL_RENDERER string.
+  void set_gl(const std::string& backend, const std::string& renderer);
   void finish(const sim::World& world, const RunResult& result, double total_ms);
   // The steps added so far, against the scene's contact margin (m).
   SolveQuality solve_quality(double margin) const;

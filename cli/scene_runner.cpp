@@ -131,6 +131,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     settings = to_render_settings(scene.render);
     try {
       renderer = std::make_unique<render::Renderer>(settings);
+      report.set_gl(render::gl_backend_name(renderer->backend()), renderer->gl_renderer());
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::bad_input) throw;
       throw Error(e.kind(), scene.label() + ": /render/resolution: " + e.what());

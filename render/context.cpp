@@ -1,55 +1,68 @@
 #include "render/context.h"
 
-#include <GL/osmesa.h>
-
-#include <array>
-
 #include "core/error.h"
+#include "render/gl.h"
 
 namespace recoil::render {
+namespace {
 
-struct GlContext::State {
-  OSMesaContext context = nullptr;
-  // OSMesaMakeCurrent needs a colour buffer, but every pass draws into our own
-  // framebuffer objects, so one pixel is enough.
-  std::array<unsigned char, 4> default_buffer{};
-};
+// The context current on this thread, across both backends: neither API knows
+// when the other has taken the thread over, so switching always goes through here.
+thread_local GlContext* t_current = nullptr;
 
-GlContext::GlContext() : m_state(std::make_unique<State>()) {
-  const int attributes[] = {OSMESA_FORMAT,
-                            OSMESA_RGBA,
-                            OSMESA_DEPTH_BITS,
-                            0,
-                            OSMESA_STENCIL_BITS,
-                            0,
-                            OSMESA_ACCUM_BITS,
-                            0,
-                            OSMESA_PROFILE,
-                            OSMESA_CORE_PROFILE,
-                            OSMESA_CONTEXT_MAJOR_VERSION,
-                            3,
-                            OSMESA_CONTEXT_MINOR_VERSION,
-                            3,
-                            0};
-  m_state->context = OSMesaCreateContextAttribs(attributes, nullptr);
-  if (m_state->context == nullptr) {
-    throw Error(ErrorKind::internal,
-                "cannot create an OpenGL 3.3 core context with OSMesa; rendering needs Mesa's "
-                "libosmesa6 (22.x or newer, llvmpipe driver) — install it (scripts/install-deps.sh) "
-                "or run with --no-render");
+}  // namespace
+
+std::optional<GlBackend> parse_gl_backend(const std::string& name) {
+  if (name == "auto") return GlBackend::automatic;
+  if (name == "osmesa") return GlBackend::osmesa;
+  if (name == "egl") return GlBackend::egl;
+  return std::nullopt;
+}
+
+const char* gl_backend_name(GlBackend backend) {
+  switch (backend) {
+    case GlBackend::automatic: return "auto";
+    case GlBackend::osmesa: return "osmesa";
+    case GlBackend::egl: return "egl";
+  }
+  return "auto";
+}
+
+GlContext::GlContext(GlBackend backend) : m_backend(backend) {
+  if (t_current) {  // the other backend's context must let go of the thread first
+    t_current->m_context->release();
+    t_current = nullptr;
+  }
+  if (backend == GlBackend::osmesa) {
+    m_context = make_osmesa_context();
+  } else if (backend == GlBackend::egl) {
+    m_context = make_egl_context();
+  } else {
+    // OSMesa stays the default where it exists; EGL where it does not (Mesa 25.1 dropped it).
+    try {
+      m_context = make_osmesa_context();
+      m_backend = GlBackend::osmesa;
+    } catch (const Error&) {
+      m_context = make_egl_context();
+      m_backend = GlBackend::egl;
+    }
   }
   make_current();
 }
 
 GlContext::~GlContext() {
-  if (m_state && m_state->context != nullptr) OSMesaDestroyContext(m_state->context);
+  if (t_current == this) {
+    m_context->release();
+    t_current = nullptr;
+  }
 }
 
 void GlContext::make_current() {
-  if (OSMesaGetCurrentContext() == m_state->context) return;
-  if (!OSMesaMakeCurrent(m_state->context, m_state->default_buffer.data(), GL_UNSIGNED_BYTE, 1, 1)) {
-    throw Error(ErrorKind::internal, "OSMesaMakeCurrent failed for the offscreen OpenGL context (libosmesa6)");
-  }
+  if (t_current == this) return;
+  if (t_current) t_current->m_context->release();
+  t_current = nullptr;
+  m_context->bind();
+  t_current = this;
 }
 
 std::string GlContext::renderer_name() {

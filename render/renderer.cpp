@@ -140,7 +140,8 @@ struct Renderer::Impl {
   std::vector<size_t> transparent_order;
 
   explicit Impl(const RenderSettings& s)
-      : target(s.width, s.height, s.msaa),
+      : context(s.gl),
+        target(s.width, s.height, s.msaa),
         shadow_map(shadow_map_size(s)),
         mesh_programs{ShaderProgram("mesh", shaders::mesh_vertex(), shaders::mesh_fragment(false, false)),
                       ShaderProgram("mesh+shadow", shaders::mesh_vertex(), shaders::mesh_fragment(true, false)),
@@ -170,6 +171,10 @@ Renderer::Renderer(const RenderSettings& settings) : m_settings(settings) {
   validate(settings);
   m_impl = std::make_unique<Impl>(settings);
 }
+
+GlBackend Renderer::backend() const { return m_impl->context.backend(); }
+
+std::string Renderer::gl_renderer() { return m_impl->context.renderer_name(); }
 
 Renderer::~Renderer() {
   if (m_impl) m_impl->context.make_current();

@@ -9,6 +9,7 @@
 #include <memory>
 
 #include "render/camera.h"
+#include "render/context.h"
 #include "render/image.h"
 #include "render/render_scene.h"
 
@@ -22,11 +23,12 @@ struct RenderSettings {
   Rgb background = {0x1d / 255.0f, 0x21 / 255.0f, 0x27 / 255.0f};  // sRGB #1d2127
   bool transparent_background = false;  // alpha 0 where nothing (not even the floor) is drawn
   bool wireframe = false;               // dark triangle edges over the shaded meshes
+  GlBackend gl = GlBackend::automatic;  // which library gives the OpenGL context (context.h)
 };
 
 class Renderer {
  public:
-  // Creates the OpenGL context (throws recoil::Error without OSMesa) and the
+  // Creates the OpenGL context (throws recoil::Error without OSMesa or EGL) and the
   // framebuffers. Throws recoil::Error(bad_input) for a size or msaa the
   // settings or the driver do not allow.
   explicit Renderer(const RenderSettings& settings);
@@ -39,6 +41,9 @@ class Renderer {
   void render(const RenderScene& scene, const Camera& camera, Image& image);
 
   const RenderSettings& settings() const { return m_settings; }
+  // The backend in use (never automatic) and its GL_RENDERER string.
+  GlBackend backend() const;
+  std::string gl_renderer();
 
  private:
   struct Impl;

@@ -11,6 +11,8 @@ packages=(
   libeigen3-dev          # Eigen 3.4: all linear algebra
   libembree-dev          # Embree 3: collision queries
   libosmesa6-dev         # OSMesa: offscreen software OpenGL
+  libegl-dev             # EGL: the second offscreen backend (--gl egl) ...
+  libegl-mesa0           # ... through Mesa's surfaceless platform
   libassimp-dev          # assimp 5: mesh import
   libmeshoptimizer-dev   # meshoptimizer: collision surfaces simplified from fine meshes
   libpng-dev             # PNG read/write

@@ -64,5 +64,18 @@ TEST(MeshLookCommand, AMissingTextureWarnsAndTheRunSucceeds) {
   EXPECT_TRUE(fs::exists(dir / "out/frame_0002.png"));
 }
 
+TEST(MeshLookCommand, InfoTellsTheLook) {
+  const CommandResult duck = run_recoil("info --json /usr/share/assimp/models/Collada/duck.dae");
+  ASSERT_EQ(duck.exit_code, 0) << duck.err;
+  const nlohmann::json look = nlohmann::json::parse(duck.out)["look"];
+  ASSERT_TRUE(look.is_object()) << duck.out;
+  ASSERT_EQ(look["materials"].size(), 1u);
+  EXPECT_GT(look["materials"][0]["texture"]["width"].get<int>(), 0);
+  EXPECT_TRUE(look["uvs"].get<bool>());
+  const CommandResult bunny = run_recoil("info " + shell_quote(source_path("assets/meshes/bunny.obj")));
+  ASSERT_EQ(bunny.exit_code, 0) << bunny.err;
+  EXPECT_NE(bunny.out.find("look         none"), std::string::npos) << bunny.out;
+}
+
 }  // namespace
 }  // namespace recoil::test

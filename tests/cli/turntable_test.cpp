@@ -37,6 +37,20 @@ TEST(TurntableCommand, WritesEveryFrameAtTheAskedSizeByteIdenticalAcrossRuns) {
   EXPECT_NE(file_bytes(a / "frame_0001.png"), file_bytes(a / "frame_0002.png"));
 }
 
+TEST(TurntableCommand, EglBackendWritesTheSameFramesAsOsmesa) {
+  const fs::path dir = scratch_dir("turntable_gl");
+  for (const char* gl : {"osmesa", "egl"}) {
+    const CommandResult r = run_recoil("turntable " + bunny() + " --turn-frames 2 --resolution 96x64 --gl " + gl +
+                                       " -o " + shell_quote(dir / gl));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    const nlohmann::json run = nlohmann::json::parse(file_bytes(dir / gl / "run.json"));
+    EXPECT_EQ(run["gl"]["backend"], gl);
+  }
+  for (const char* name : {"frame_0001.png", "frame_0002.png"})
+    EXPECT_EQ(file_bytes(dir / "osmesa" / name), file_bytes(dir / "egl" / name)) << name;
+  EXPECT_EQ(run_recoil("turntable " + bunny() + " --gl vulkan -o " + shell_quote(dir / "bad")).exit_code, 2);
+}
+
 TEST(TurntableCommand, TransparentBackgroundAndColour) {
   const fs::path dir = scratch_dir("turntable_transparent");
   const CommandResult r = run_recoil("turntable " + bunny() +
