@@ -1,7 +1,5 @@
 #include "cli/render_bridge.h"
 
-#include <map>
-
 #include "core/check.h"
 #include "render/srgb.h"
 
@@ -13,35 +11,19 @@ void update_positions(render::RenderMesh& render_mesh, const sim::Points& vertic
     for (int k = 0; k < 3; ++k) render_mesh.positions[3 * v + k] = static_cast<float>(vertices(v, k));
 }
 
-namespace {
-
-// The look as the renderer takes it: each corner's colour is its material's
-// base colour times its vertex colour, linear. A material without a colour
-// of its own is white under a texture or vertex colours, else the body's colour.
 std::shared_ptr<const render::RenderLook> to_render_look(const sim::SurfaceLook& look, const render::Rgb& body_color) {
   auto out = std::make_shared<render::RenderLook>();
   const std::array<float, 3> plain = render::srgb_to_linear(body_color);
-  const bool vertex_colors = !look.corner_color.empty();
-  std::map<const sim::LookImage*, std::shared_ptr<const render::Image>> converted;
   std::vector<std::array<float, 3>> base;
   for (const sim::LookMaterial& m : look.materials) {
     render::RenderMaterial material;
-    if (m.texture) {
-      auto& image = converted[m.texture.get()];
-      if (!image) {
-        auto copy = std::make_shared<render::Image>();
-        copy->width = m.texture->width;
-        copy->height = m.texture->height;
-        copy->rgba = m.texture->rgba;
-        image = std::move(copy);
-      }
-      material.texture = image;
-    }
+    if (m.has_uvs && !look.corner_uv.empty()) material.texture = m.texture;  // the image itself: no copy
     out->materials.push_back(material);
-    const bool tinted = material.texture || vertex_colors;
+    const bool tinted = material.texture || m.vertex_colored;
     base.push_back(m.has_color ? m.color : tinted ? std::array<float, 3>{1.0f, 1.0f, 1.0f} : plain);
   }
   const size_t faces = look.triangle_material.size();
+  const bool vertex_colors = !look.corner_color.empty();
   out->triangle_materials.assign(look.triangle_material.begin(), look.triangle_material.end());
   out->corner_colors.resize(9 * faces);
   for (size_t c = 0; c < 3 * faces; ++c)
@@ -52,9 +34,15 @@ std::shared_ptr<const render::RenderLook> to_render_look(const sim::SurfaceLook&
   return out;
 }
 
-}  // namespace
+std::shared_ptr<const render::RenderLook> RenderLookCache::get(const std::shared_ptr<const sim::SurfaceLook>& look,
+                                                               const render::Rgb& body_color) {
+  auto& cached = m_looks[{look, body_color}];
+  if (!cached) cached = to_render_look(*look, body_color);
+  return cached;
+}
 
-render::RenderMesh to_render_mesh(const sim::TriMesh& mesh, const render::Rgb& color, float opacity) {
+render::RenderMesh to_render_mesh(const sim::TriMesh& mesh, const render::Rgb& color, float opacity,
+                                  RenderLookCache* looks) {
   render::RenderMesh out;
   update_positions(out, mesh.vertices);
   out.indices.resize(static_cast<size_t>(mesh.num_triangles()) * 3);
@@ -68,7 +56,7 @@ render::RenderMesh to_render_mesh(const sim::TriMesh& mesh, const render::Rgb& c
   if (mesh.look && mesh.look->draws_anything()) {
     RECOIL_CHECK(mesh.look->num_triangles() == mesh.num_triangles(),
                  "look of " << mesh.look->num_triangles() << " triangles for " << mesh.num_triangles());
-    out.look = to_render_look(*mesh.look, color);
+    out.look = looks ? looks->get(mesh.look, color) : to_render_look(*mesh.look, color);
   }
   return out;
 }

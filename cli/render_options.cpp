@@ -20,7 +20,7 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
   command.add_option("--background", options.background, "Background #rrggbb, or 'transparent' for alpha 0")
       ->group(group)->capture_default_str();
   command.add_flag("--wireframe", options.wireframe, "Draw triangle edges over the shading")->group(group);
-  command.add_option("--color", options.color, "Colour of the bodies, #rrggbb (default: a palette)")->group(group);
+  command.add_option("--color", options.color, "Colour of the bodies, #rrggbb, in place of the mesh files' own materials, textures and vertex colours (default: those, else a palette)")->group(group);
   command.add_option("--camera-distance", options.camera_distance,
                      "Camera distance from its target in metres (default: fit the scene)")
       ->check(CLI::Validator(

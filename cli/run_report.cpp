@@ -76,6 +76,7 @@ void RunReport::finish(const sim::World& world, const RunResult& result, double 
             {"warnings",
              {{"summary", describe_run_warnings(result)},
               {"open_meshes", result.open_meshes},
+              {"look", result.look_warnings},
               {"not_converged_steps", result.quality.not_converged},
               {"worst_kkt", result.quality.worst_kkt},
               {"max_penetration", result.quality.max_penetration},

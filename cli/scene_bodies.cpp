@@ -185,14 +185,6 @@ struct BodiesSoFar {
   int mesh_bodies = 0;  // bodies other than planes, for the palette
 };
 
-// What of a mesh file's look could not be read (a missing texture): the body
-// is drawn without it, and the user is told once per file, even under -q.
-void warn_about_look(const fs::path& path, const sim::TriMesh& mesh) {
-  if (!mesh.look) return;
-  for (const std::string& warning : mesh.look->warnings)
-    std::cerr << "recoil: warning: " << path.string() << ": " << warning << "\n";
-}
-
 // A mesh file as read, cached unrotated (bodies may give it different "up"s).
 Geometry read_mesh_file(const JsonCursor& c, const fs::path& base_dir, MeshFiles& files) {
   const fs::path path = resolve_file(c, base_dir).lexically_normal();
@@ -206,7 +198,6 @@ Geometry read_mesh_file(const JsonCursor& c, const fs::path& base_dir, MeshFiles
       g.surface = sim::boundary_surface(g.tets);
     } else {
       g.surface = load_geometry(c, [&] { return sim::import_surface(path); });
-      warn_about_look(path, g.surface);
       g.open = !sim::compute_mesh_stats(g.surface).watertight;
     }
     if (g.surface.empty()) c.fail("holds no triangles: " + path.string());
@@ -421,11 +412,15 @@ void parse_bodies(const std::vector<JsonCursor>& bodies, const fs::path& base_di
     Geometry g;
     g.open = !sim::compute_mesh_stats(mesh).watertight;
     g.surface = std::move(mesh);
-    warn_about_look(path, g.surface);
     so_far.files.emplace(path, std::move(g));
   }
   scene.bodies.reserve(bodies.size());
   for (size_t i = 0; i < bodies.size(); ++i) parse_body(bodies[i], static_cast<int>(i), base_dir, so_far, scene);
+  // Each file's look warnings once, however many bodies use it.
+  for (const auto& [path, geometry] : so_far.files)
+    if (geometry.surface.look)
+      for (const std::string& warning : geometry.surface.look->warnings)
+        scene.look_warnings.emplace_back(absolute_path(path), warning);
 }
 
 }  // namespace recoil::cli

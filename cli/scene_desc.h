@@ -78,6 +78,9 @@ struct SceneDesc {
   RenderOptions render;         // resolution, fps, msaa, shadows, background, ...
   bool grid = true;             // grid lines on the ground
   CameraDesc camera;
+  // What of the mesh files' looks could not be read (a missing texture), by
+  // absolute file, in file order: the bodies are drawn without it.
+  std::vector<std::pair<std::filesystem::path, std::string>> look_warnings;
 
   // Frames in [0, duration] at render.fps: frame k shows time (k - 1) / fps.
   int frame_count() const;

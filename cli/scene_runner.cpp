@@ -87,6 +87,10 @@ std::string describe_run_warnings(const RunResult& result) {
   if (result.still_moving())
     text += std::string(text.empty() ? "" : "; ") + "still moving after settling " +
             format_number("%g", result.settle_limit) + " s (a longer settle lets it come to rest)";
+  if (!result.look_warnings.empty()) {
+    text += std::string(text.empty() ? "" : "; ") + result.look_warnings.front();
+    if (result.look_warnings.size() > 1) text += " (and " + std::to_string(result.look_warnings.size() - 1) + " more in run.json)";
+  }
   if (result.open_meshes.empty()) return text;
   text += std::string(text.empty() ? "" : "; ") + (result.open_meshes.size() == 1 ? "open mesh: " : "open meshes: ");
   // A pile of a thousand copies names three of them and counts the rest.
@@ -161,6 +165,11 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     if (body.open_mesh && (body.kind == sim::BodyKind::deformable || body.kind == sim::BodyKind::rigid))
       result.open_meshes.push_back(body.name);
   }
+  // A look nobody sees (every body of the file painted by a colour) warns of nothing.
+  for (const auto& [file, warning] : scene.look_warnings)
+    if (std::any_of(scene.bodies.begin(), scene.bodies.end(),
+                    [&](const SceneBody& b) { return b.mesh_file == file && !b.color_given; }))
+      result.look_warnings.push_back(file.string() + ": " + warning);
   result.settle_limit = scene.settle;
   size_t next = 0;  // index into selected
   long inverted_steps = 0;

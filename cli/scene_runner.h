@@ -41,6 +41,7 @@ struct RunResult {
   std::string message;      // what failed, or what interrupted the run
   SolveQuality quality;
   std::vector<std::string> open_meshes;  // bodies from mesh files that are not watertight, scene order
+  std::vector<std::string> look_warnings;  // "FILE: ..." for the looks drawn without something (a texture)
   double settle_limit = 0.0;  // s: the scene's settle
   double settle_time = 0.0;   // s: simulated before frame 1
   bool settled = false;       // every dynamic body came to rest within settle_limit

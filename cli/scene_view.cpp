@@ -50,6 +50,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
     }
   }
   sim::Aabb box;
+  RenderLookCache looks;
   for (size_t i = 0; i < surfaces.size(); ++i) {
     const sim::BodySurface& s = surfaces[i];
     const SceneBody* body = scene.find(s.name);
@@ -57,7 +58,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
     const float opacity = body ? body->opacity : 1.0f;
     sim::TriMesh mesh{s.positions, s.triangles, body && body->color_given ? nullptr : s.look};
     m_mesh_of_surface.push_back(static_cast<int>(m_render.meshes.size()));
-    m_render.meshes.push_back(to_render_mesh(mesh, color, opacity));
+    m_render.meshes.push_back(to_render_mesh(mesh, color, opacity, &looks));
     const sim::Aabb b = bounds_of(s.positions);
     if (!b.valid()) continue;
     if (s.name == m_camera.body) {

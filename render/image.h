@@ -1,25 +1,9 @@
 #pragma once
-// Image: 8-bit RGBA pixels, row-major, top row first (the order PNG stores).
-// Colour values are sRGB-encoded, alpha is straight (not premultiplied).
-#include <cstddef>
-#include <cstdint>
-#include <vector>
+// Image: what the renderer draws into and reads textures from (core/rgba_image.h).
+#include "core/rgba_image.h"
 
 namespace recoil::render {
 
-struct Image {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
-
-  Image() = default;
-  Image(int w, int h) : width(w), height(h), rgba(static_cast<size_t>(w) * h * 4, 0) {}
-
-  std::uint8_t* pixel(int x, int y) { return rgba.data() + (static_cast<size_t>(y) * width + x) * 4; }
-  const std::uint8_t* pixel(int x, int y) const {
-    return rgba.data() + (static_cast<size_t>(y) * width + x) * 4;
-  }
-  bool empty() const { return width == 0 || height == 0; }
-};
+using Image = RgbaImage;
 
 }  // namespace recoil::render

@@ -7,6 +7,24 @@
 #include "render/vertex_normals.h"
 
 namespace recoil::render {
+namespace {
+
+// values[source[v]] for every v, `width` floats each.
+void gather(const float* values, const std::vector<std::uint32_t>& source, size_t width, std::vector<float>& out) {
+  out.resize(width * source.size());
+  for (size_t v = 0; v < source.size(); ++v) std::copy_n(values + width * source[v], width, out.data() + width * v);
+}
+
+// Creates or refills `buffer` with `data` (grows, never shrinks, so a mesh
+// that changes size does not reallocate each frame).
+void send(GLuint buffer, const std::vector<float>& data, bool grow) {
+  glBindBuffer(GL_ARRAY_BUFFER, buffer);
+  const auto bytes = static_cast<GLsizeiptr>(data.size() * sizeof(float));
+  if (grow) glBufferData(GL_ARRAY_BUFFER, bytes, data.data(), GL_STREAM_DRAW);
+  else glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, data.data());
+}
+
+}  // namespace
 
 MeshBuffers::MeshBuffers()
     : m_vertex_array(gl::VertexArray::create()),
@@ -37,19 +55,19 @@ void MeshBuffers::set_topology(const RenderMesh& mesh) {
                "index " << *worst << " >= vertex count " << vertex_count);
   m_indices = mesh.indices;
   m_look = mesh.look;
+  m_smooth = split_creases(mesh.positions, mesh.indices, kCreaseDegrees);
+  m_groups.clear();
+  m_capacity = 0;  // the drawn vertex count may have changed
+  glBindVertexArray(m_vertex_array.get());
   if (mesh.look) {
     set_look(mesh);
   } else {
-    m_split = split_creases(mesh.positions, mesh.indices, kCreaseDegrees);
-    m_groups.clear();
-    m_textures.clear();
-    glBindVertexArray(m_vertex_array.get());
     glDisableVertexAttribArray(2);
     glDisableVertexAttribArray(3);
   }
-  glBindVertexArray(m_vertex_array.get());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(m_split.indices.size() * sizeof(std::uint32_t)),
-               m_split.indices.data(), GL_STATIC_DRAW);
+  const std::vector<std::uint32_t>& drawn = mesh.look ? m_drawn.indices : m_smooth.indices;
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(drawn.size() * sizeof(std::uint32_t)), drawn.data(),
+               GL_STATIC_DRAW);
   glBindVertexArray(0);
 }
 
@@ -71,13 +89,17 @@ void MeshBuffers::set_look(const RenderMesh& mesh) {
     if (!look.corner_uvs.empty() && look.materials[material].texture) std::copy_n(look.corner_uvs.data() + 2 * c, 2, key + 3);
     key[5] = static_cast<float>(material);
   }
-  const CreaseSplit split = split_creases(mesh.positions, mesh.indices, kCreaseDegrees, keys, kStride);
-  const size_t render_vertices = split.source.size();
-  std::vector<float> colors(3 * render_vertices, 1.0f), uvs(2 * render_vertices, 0.0f);
-  for (size_t c = 0; c < split.indices.size(); ++c) {
-    const size_t v = split.indices[c];
+  // Keyed corners are joined only where they are also smooth, so each drawn
+  // vertex lies in one smooth group.
+  const CreaseSplit keyed = split_creases(mesh.positions, mesh.indices, kCreaseDegrees, keys, kStride);
+  const size_t drawn_vertices = keyed.source.size();
+  std::vector<float> colors(3 * drawn_vertices, 1.0f), uvs(2 * drawn_vertices, 0.0f);
+  m_smooth_of.assign(drawn_vertices, 0);
+  for (size_t c = 0; c < keyed.indices.size(); ++c) {
+    const size_t v = keyed.indices[c];
     std::copy_n(keys.data() + kStride * c, 3, colors.data() + 3 * v);
     std::copy_n(keys.data() + kStride * c + 3, 2, uvs.data() + 2 * v);
+    m_smooth_of[v] = m_smooth.indices[c];
   }
   // Triangles grouped by material, in their own order within a group.
   std::vector<std::uint32_t> order(faces);
@@ -85,40 +107,21 @@ void MeshBuffers::set_look(const RenderMesh& mesh) {
   std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
     return look.triangle_materials[a] < look.triangle_materials[b];
   });
-  m_split = split;
-  m_split.indices.clear();
-  m_groups.clear();
-  m_textures.clear();
-  std::vector<GLuint> texture_of(look.materials.size(), 0);
-  for (std::uint32_t f : order) {
+  m_drawn.source = keyed.source;
+  m_drawn.indices.clear();
+  m_drawn.indices.reserve(keyed.indices.size());
+  for (size_t i = 0; i < order.size(); ++i) {
+    const std::uint32_t f = order[i];
     const std::uint32_t material = look.triangle_materials[f];
-    if (m_groups.empty() || m_groups.back().material != &look.materials[material]) {
+    if (i == 0 || material != look.triangle_materials[order[i - 1]]) {
       Group group;
-      group.first = m_split.indices.size();
-      group.material = &look.materials[material];
-      const Image* image = group.material->texture.get();
-      if (image && !image->empty() && !look.corner_uvs.empty()) {
-        if (texture_of[material] == 0) {
-          m_textures.push_back(gl::Texture::create());
-          texture_of[material] = m_textures.back().get();
-          glBindTexture(GL_TEXTURE_2D, texture_of[material]);
-          glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, image->width, image->height, 0, GL_RGBA, GL_UNSIGNED_BYTE,
-                       image->rgba.data());
-          glGenerateMipmap(GL_TEXTURE_2D);
-          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
-          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-          glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
-          glBindTexture(GL_TEXTURE_2D, 0);
-        }
-        group.texture = texture_of[material];
-      }
+      group.first = m_drawn.indices.size();
+      if (!look.corner_uvs.empty()) group.texture = look.materials[material].texture;
       m_groups.push_back(group);
     }
     m_groups.back().count += 3;
-    m_split.indices.insert(m_split.indices.end(), split.indices.begin() + 3 * f, split.indices.begin() + 3 * f + 3);
+    m_drawn.indices.insert(m_drawn.indices.end(), keyed.indices.begin() + 3 * f, keyed.indices.begin() + 3 * f + 3);
   }
-  glBindVertexArray(m_vertex_array.get());
   glBindBuffer(GL_ARRAY_BUFFER, m_colors.get());
   glBufferData(GL_ARRAY_BUFFER, static_cast<GLsizeiptr>(colors.size() * sizeof(float)), colors.data(), GL_STATIC_DRAW);
   glEnableVertexAttribArray(2);
@@ -137,41 +140,33 @@ void MeshBuffers::upload(const RenderMesh& mesh) {
   m_input_floats = mesh.positions.size();
   m_sent_positions = mesh.positions;
 
-  const float* positions = mesh.positions.data();
-  std::size_t floats = mesh.positions.size();
-  if (!m_split.identity) {
-    m_split_positions.resize(3 * m_split.source.size());
-    for (std::size_t v = 0; v < m_split.source.size(); ++v) {
-      const float* p = positions + 3 * std::size_t{m_split.source[v]};
-      std::copy(p, p + 3, m_split_positions.begin() + static_cast<std::ptrdiff_t>(3 * v));
-    }
-    positions = m_split_positions.data();
-    floats = m_split_positions.size();
+  // Normals over the smooth groups; a look's drawn vertices take their group's.
+  const std::vector<float>* positions = &mesh.positions;
+  if (!m_smooth.identity) {
+    gather(mesh.positions.data(), m_smooth.source, 3, m_gathered);
+    positions = &m_gathered;
   }
-  area_weighted_normals({positions, floats}, m_split.indices, m_normal_data);
-
-  const auto bytes = static_cast<GLsizeiptr>(floats * sizeof(float));
-  if (floats > m_capacity) {
-    // Grow (never shrink) so a mesh that changes size does not reallocate each frame.
-    glBindBuffer(GL_ARRAY_BUFFER, m_positions.get());
-    glBufferData(GL_ARRAY_BUFFER, bytes, positions, GL_STREAM_DRAW);
-    glBindBuffer(GL_ARRAY_BUFFER, m_normals.get());
-    glBufferData(GL_ARRAY_BUFFER, bytes, m_normal_data.data(), GL_STREAM_DRAW);
-    m_capacity = floats;
-  } else {
-    glBindBuffer(GL_ARRAY_BUFFER, m_positions.get());
-    glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, positions);
-    glBindBuffer(GL_ARRAY_BUFFER, m_normals.get());
-    glBufferSubData(GL_ARRAY_BUFFER, 0, bytes, m_normal_data.data());
+  area_weighted_normals(*positions, m_smooth.indices, m_normal_data);
+  const std::vector<float>* normals = &m_normal_data;
+  if (m_look) {
+    gather(mesh.positions.data(), m_drawn.source, 3, m_drawn_positions);
+    gather(m_normal_data.data(), m_smooth_of, 3, m_drawn_normals);
+    positions = &m_drawn_positions;
+    normals = &m_drawn_normals;
   }
+  const bool grow = positions->size() > m_capacity;
+  send(m_positions.get(), *positions, grow);
+  send(m_normals.get(), *normals, grow);
+  if (grow) m_capacity = positions->size();
 }
 
 void MeshBuffers::draw() const {
-  if (m_split.indices.empty()) return;
+  const std::vector<std::uint32_t>& drawn = m_look ? m_drawn.indices : m_smooth.indices;
+  if (drawn.empty()) return;
   glBindVertexArray(m_vertex_array.get());
   // Without a look every vertex is white: the program's albedo alone colours it.
   if (!m_look) glVertexAttrib3f(2, 1.0f, 1.0f, 1.0f);
-  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m_split.indices.size()), GL_UNSIGNED_INT, nullptr);
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(drawn.size()), GL_UNSIGNED_INT, nullptr);
 }
 
 void MeshBuffers::draw(const Group& group) const {

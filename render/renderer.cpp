@@ -19,6 +19,7 @@
 #include "render/shadow_map.h"
 #include "render/srgb.h"
 #include "render/studio_lights.h"
+#include "render/texture_cache.h"
 
 namespace recoil::render {
 namespace {
@@ -136,6 +137,7 @@ struct Renderer::Impl {
   ShaderProgram wire_program;
   Ground ground;
   std::vector<MeshBuffers> meshes;  // slot i draws scene.meshes[i]
+  TextureCache textures;
   std::vector<Bounds> mesh_bounds;
   std::vector<size_t> transparent_order;
 
@@ -298,7 +300,8 @@ void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh&
       set(program, "u_opacity", opacity);
       if (group.texture) {
         glActiveTexture(kMaterialUnit);
-        glBindTexture(GL_TEXTURE_2D, group.texture);
+        textures.bind(group.texture);
+        glActiveTexture(GL_TEXTURE0);
         set(program, "u_texture", static_cast<int>(kMaterialUnit - GL_TEXTURE0));
       }
       buffers.draw(group);

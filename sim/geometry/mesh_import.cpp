@@ -14,6 +14,7 @@
 #include <map>
 #include <vector>
 
+#include "core/byte_stream.h"
 #include "core/check.h"
 #include "core/error.h"
 #include "core/regular_file.h"
@@ -36,9 +37,16 @@ Eigen::Matrix4d to_eigen(const aiMatrix4x4& m) {
 struct Gathered {
   TriMesh mesh;
   SurfaceLook look;
-  bool any_uv = false, any_color = false;  // the arrays below are filled only once a mesh has them
-  std::vector<float> uv, color;
+  bool linear_colors = false;  // the file's vertex colours are linear (glTF), not sRGB
+  bool any_uv = false, any_color = false;  // look's corner arrays are filled only once a mesh has them
+  std::vector<std::int32_t> materials_with_uvs, materials_with_colors;  // by the meshes that use them
 };
+
+float linear_channel(float c, bool linear) {
+  if (!std::isfinite(c)) return 1.0f;
+  c = std::clamp(c, 0.0f, 1.0f);
+  return linear ? c : c <= 0.04045f ? c / 12.92f : std::pow((c + 0.055f) / 1.055f, 2.4f);
+}
 
 // Appends the triangles of every mesh under `node`, transformed to the root.
 void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& parent, Gathered& out, int depth) {
@@ -76,18 +84,27 @@ void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& pa
     for (int f = 0; f < kept; ++f) part.triangles.row(f) << fans[f][0], fans[f][1], fans[f][2];
 
     // The look of each corner: UV channel 0, colour set 0, the mesh's material.
-    const size_t before = out.look.triangle_material.size();
+    SurfaceLook& look = out.look;
+    const size_t before = look.triangle_material.size();
     const int material = mesh.mMaterialIndex < scene.mNumMaterials ? static_cast<int>(mesh.mMaterialIndex) : -1;
-    out.look.triangle_material.insert(out.look.triangle_material.end(), fans.size(), material);
+    look.triangle_material.insert(look.triangle_material.end(), fans.size(), material);
     const aiVector3D* uv = mesh.mTextureCoords[0];
     const aiColor4D* color = mesh.mColors[0];
-    if (uv && !out.any_uv) out.uv.assign(6 * before, 0.0f), out.any_uv = true;
-    if (color && !out.any_color) out.color.assign(9 * before, 1.0f), out.any_color = true;
+    if (uv && !out.any_uv) look.corner_uv.assign(6 * before, 0.0f), out.any_uv = true;
+    if (color && !out.any_color) look.corner_color.assign(9 * before, 1.0f), out.any_color = true;
+    if (uv) out.materials_with_uvs.push_back(material);
+    if (color) out.materials_with_colors.push_back(material);
     for (const std::array<int, 3>& fan : fans)
       for (int v : fan) {
-        if (out.any_uv) out.uv.insert(out.uv.end(), {uv ? uv[v].x : 0.0f, uv ? uv[v].y : 0.0f});
+        if (out.any_uv) {
+          const bool finite = uv && std::isfinite(uv[v].x) && std::isfinite(uv[v].y);
+          look.corner_uv.insert(look.corner_uv.end(), {finite ? uv[v].x : 0.0f, finite ? uv[v].y : 0.0f});
+        }
         if (out.any_color)
-          out.color.insert(out.color.end(), {color ? color[v].r : 1.0f, color ? color[v].g : 1.0f, color ? color[v].b : 1.0f});
+          look.corner_color.insert(look.corner_color.end(),
+                                   {color ? linear_channel(color[v].r, out.linear_colors) : 1.0f,
+                                    color ? linear_channel(color[v].g, out.linear_colors) : 1.0f,
+                                    color ? linear_channel(color[v].b, out.linear_colors) : 1.0f});
       }
     append(out.mesh, part);
   }
@@ -95,8 +112,15 @@ void collect(const aiScene& scene, const aiNode& node, const Eigen::Matrix4d& pa
     if (node.mChildren[c]) collect(scene, *node.mChildren[c], world, out, depth + 1);
 }
 
+// What the reader's child hands back: the merged mesh with its look, and
+// the textures its materials name, still to be decoded.
+struct ReaderAnswer {
+  TriMesh mesh;
+  std::vector<TextureSource> textures;
+};
+
 // Every mesh of the file at `path` under its node transforms, merged.
-TriMesh read_with_assimp(const fs::path& path) {
+ReaderAnswer read_with_assimp(const fs::path& path) {
   Assimp::Importer importer;
   // Only assimp's validation runs: its other post-processing steps assert
   // (and abort) on some malformed files, so triangulation, dropping points and
@@ -109,9 +133,15 @@ TriMesh read_with_assimp(const fs::path& path) {
     throw bad_input(path.string() + ": cannot read mesh: " + reason);
   }
   Gathered gathered;
+  // glTF's COLOR_0 is linear by its specification; other formats' vertex
+  // colours (PLY's bytes, OBJ's extension) are the sRGB values a viewer shows.
+  std::string extension = path.extension().string();
+  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  gathered.linear_colors = extension == ".gltf" || extension == ".glb";
   collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), gathered, 0);
+  ReaderAnswer answer;
   SurfaceLook& look = gathered.look;
-  look.materials = read_materials(*scene, path, look.warnings);
+  look.materials = read_materials(*scene, path, answer.textures, look.warnings);
   // Meshes without a material of their own draw in the body's colour: one
   // more material with none.
   const auto plain = static_cast<std::int32_t>(look.materials.size());
@@ -119,52 +149,55 @@ TriMesh read_with_assimp(const fs::path& path) {
   for (std::int32_t& m : look.triangle_material)
     if (m < 0) m = plain, any_plain = true;
   if (any_plain) look.materials.emplace_back();
-  look.corner_uv = std::move(gathered.uv);
-  look.corner_color = std::move(gathered.color);
-  // sRGB 8-bit vertex colours (PLY's) reach us as bytes / 255; glTF's COLOR_0
-  // is linear by its specification. Both are taken as linear here.
-  if (look.draws_anything() || !look.warnings.empty())
-    gathered.mesh.look = std::make_shared<const SurfaceLook>(std::move(look));
-  return gathered.mesh;
+  for (std::int32_t m : gathered.materials_with_uvs) look.materials[static_cast<size_t>(m < 0 ? plain : m)].has_uvs = true;
+  for (std::int32_t m : gathered.materials_with_colors)
+    look.materials[static_cast<size_t>(m < 0 ? plain : m)].vertex_colored = true;
+  answer.mesh = std::move(gathered.mesh);
+  if (look.draws_anything() || !look.warnings.empty() || !answer.textures.empty())
+    answer.mesh.look = std::make_shared<const SurfaceLook>(std::move(look));
+  return answer;
 }
 
-// The mesh as bytes: #V and #F (int64), the vertex rows (double), the
-// triangle rows (int), whether a look follows (one byte), and the look.
-std::string encode_mesh(const TriMesh& mesh) {
-  const std::int64_t counts[2] = {mesh.vertices.rows(), mesh.triangles.rows()};
-  std::string bytes(reinterpret_cast<const char*>(counts), sizeof counts);
-  // An empty Eigen matrix has no data pointer, so the copies go through sizes first.
-  bytes.resize(sizeof counts + sizeof(double) * mesh.vertices.size() + sizeof(int) * mesh.triangles.size());
-  if (mesh.vertices.size() > 0)
-    std::memcpy(bytes.data() + sizeof counts, mesh.vertices.data(), sizeof(double) * mesh.vertices.size());
-  if (mesh.triangles.size() > 0)
-    std::memcpy(bytes.data() + bytes.size() - sizeof(int) * mesh.triangles.size(), mesh.triangles.data(),
-                sizeof(int) * mesh.triangles.size());
-  bytes.push_back(mesh.look ? 1 : 0);
-  if (mesh.look) encode_look(*mesh.look, bytes);
+// The answer as bytes: #V and #F (int64), the vertex rows (double), the
+// triangle rows (int), whether a look follows (one byte), the look and its textures.
+std::string encode_answer(const ReaderAnswer& answer) {
+  const TriMesh& mesh = answer.mesh;
+  std::string bytes;
+  put_value(bytes, std::array<std::int64_t, 2>{mesh.vertices.rows(), mesh.triangles.rows()});
+  bytes.append(reinterpret_cast<const char*>(mesh.vertices.data()), sizeof(double) * static_cast<size_t>(mesh.vertices.size()));
+  bytes.append(reinterpret_cast<const char*>(mesh.triangles.data()), sizeof(int) * static_cast<size_t>(mesh.triangles.size()));
+  put_value(bytes, static_cast<std::uint8_t>(mesh.look != nullptr));
+  if (mesh.look) {
+    encode_look(*mesh.look, bytes);
+    encode_texture_sources(answer.textures, bytes);
+  }
   return bytes;
 }
 
-TriMesh decode_mesh(const std::string& bytes) {
-  std::int64_t counts[2] = {0, 0};
-  RECOIL_CHECK(bytes.size() >= sizeof counts);
-  std::memcpy(counts, bytes.data(), sizeof counts);
-  const size_t vertex_bytes = 3 * sizeof(double) * static_cast<size_t>(counts[0]);
-  const size_t triangle_bytes = 3 * sizeof(int) * static_cast<size_t>(counts[1]);
-  RECOIL_CHECK(counts[0] >= 0 && counts[1] >= 0 && bytes.size() > sizeof counts + vertex_bytes + triangle_bytes,
-               "mesh of " << bytes.size() << " bytes for " << counts[0] << " vertices and " << counts[1] << " triangles");
+// The mesh the answer holds, its textures decoded (each in a child of its own).
+TriMesh decode_answer(const std::string& bytes) {
+  ByteReader in(bytes);
+  const auto counts = in.value<std::array<std::int64_t, 2>>();
+  RECOIL_CHECK(counts[0] >= 0 && counts[1] >= 0, "counts " << counts[0] << ", " << counts[1]);
   TriMesh mesh;
-  mesh.vertices.resize(counts[0], 3);
-  mesh.triangles.resize(counts[1], 3);
-  if (vertex_bytes > 0) std::memcpy(mesh.vertices.data(), bytes.data() + sizeof counts, vertex_bytes);
-  if (triangle_bytes > 0) std::memcpy(mesh.triangles.data(), bytes.data() + sizeof counts + vertex_bytes, triangle_bytes);
-  size_t offset = sizeof counts + vertex_bytes + triangle_bytes;
-  if (bytes[offset++] != 0) {
+  const auto vertices = static_cast<size_t>(counts[0]), triangles = static_cast<size_t>(counts[1]);
+  RECOIL_CHECK(vertices <= in.left() / (3 * sizeof(double)) && triangles <= in.left() / (3 * sizeof(int)),
+               "mesh of " << bytes.size() << " bytes for " << vertices << " vertices and " << triangles << " triangles");
+  mesh.vertices.resize(static_cast<Eigen::Index>(vertices), 3);
+  mesh.triangles.resize(static_cast<Eigen::Index>(triangles), 3);
+  in.items(mesh.vertices.data(), 3 * vertices);
+  in.items(mesh.triangles.data(), 3 * triangles);
+  if (in.value<std::uint8_t>() != 0) {
+    size_t offset = in.offset();
     SurfaceLook look = decode_look(bytes, offset);
+    const std::vector<TextureSource> textures = decode_texture_sources(bytes, offset);
+    RECOIL_CHECK(offset == bytes.size(), "mesh answer has " << bytes.size() - offset << " bytes after the look");
     RECOIL_CHECK(look.num_triangles() == mesh.num_triangles(), "look of " << look.num_triangles() << " triangles");
-    mesh.look = std::make_shared<const SurfaceLook>(std::move(look));
+    decode_textures(textures, look.materials, look.warnings);
+    if (look.draws_anything() || !look.warnings.empty()) mesh.look = std::make_shared<const SurfaceLook>(std::move(look));
+  } else {
+    RECOIL_CHECK(in.left() == 0, "mesh answer has " << in.left() << " bytes after the mesh");
   }
-  RECOIL_CHECK(offset == bytes.size(), "mesh answer has " << bytes.size() - offset << " bytes after the look");
   return mesh;
 }
 
@@ -219,8 +252,8 @@ TriMesh import_surface(const fs::path& path) {
   std::error_code failed;  // only the time limit depends on the size
   const std::uintmax_t mib = fs::file_size(path, failed) >> 20;
   const int cpu_seconds = 5 + (failed ? 0 : static_cast<int>(std::min<std::uintmax_t>(mib, 1 << 20)));
-  TriMesh merged = decode_mesh(read_in_child([&] { return encode_mesh(read_with_assimp(path)); }, path.string(),
-                                             "the mesh reader (assimp)", cpu_seconds));
+  TriMesh merged = decode_answer(read_in_child([&] { return encode_answer(read_with_assimp(path)); }, path.string(),
+                                               "the mesh reader (assimp)", cpu_seconds));
   for (int v = 0; v < merged.num_vertices(); ++v)
     if (!merged.vertices.row(v).allFinite()) throw bad_input(path.string() + ": mesh has non-finite vertex coordinates");
   TriMesh clean = weld_and_clean(merged);

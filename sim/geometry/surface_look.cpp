@@ -1,8 +1,8 @@
 #include "sim/geometry/surface_look.h"
 
 #include <algorithm>
-#include <cstring>
 
+#include "core/byte_stream.h"
 #include "core/check.h"
 
 namespace recoil::sim {
@@ -44,107 +44,38 @@ SurfaceLook with_swapped_corners(const SurfaceLook& look) {
   return out;
 }
 
-}  // namespace recoil::sim
-
-namespace recoil::sim {
-namespace {
-
-template <typename T>
-void put(std::string& bytes, const T& value) {
-  bytes.append(reinterpret_cast<const char*>(&value), sizeof value);
-}
-
-template <typename T>
-void put_array(std::string& bytes, const std::vector<T>& values) {
-  put(bytes, static_cast<std::int64_t>(values.size()));
-  if (!values.empty()) bytes.append(reinterpret_cast<const char*>(values.data()), sizeof(T) * values.size());
-}
-
-class Reader {
- public:
-  Reader(const std::string& bytes, size_t& offset) : m_bytes(bytes), m_offset(offset) {}
-  template <typename T>
-  T get() {
-    T value{};
-    take(&value, sizeof value);
-    return value;
-  }
-  template <typename T>
-  std::vector<T> get_array() {
-    const auto count = get<std::int64_t>();
-    RECOIL_CHECK(count >= 0 && static_cast<size_t>(count) <= (m_bytes.size() - m_offset) / sizeof(T),
-                 "look array of " << count << " items past the end");
-    std::vector<T> values(static_cast<size_t>(count));
-    take(values.data(), sizeof(T) * values.size());
-    return values;
-  }
-
- private:
-  void take(void* to, size_t size) {
-    RECOIL_CHECK(size <= m_bytes.size() - m_offset, "look bytes end early");
-    if (size > 0) std::memcpy(to, m_bytes.data() + m_offset, size);
-    m_offset += size;
-  }
-  const std::string& m_bytes;
-  size_t& m_offset;
-};
-
-void put_string(std::string& bytes, const std::string& text) { put_array(bytes, std::vector<char>(text.begin(), text.end())); }
-
-std::string get_string(Reader& in) {
-  const std::vector<char> chars = in.get_array<char>();
-  return {chars.begin(), chars.end()};
-}
-
-}  // namespace
-
 void encode_look(const SurfaceLook& look, std::string& bytes) {
-  put(bytes, static_cast<std::int64_t>(look.materials.size()));
+  put_value(bytes, static_cast<std::int64_t>(look.materials.size()));
   for (const LookMaterial& m : look.materials) {
     put_string(bytes, m.name);
-    put(bytes, static_cast<std::uint8_t>(m.has_color));
-    put(bytes, m.color);
-    put(bytes, static_cast<std::uint8_t>(m.texture != nullptr));
-    if (!m.texture) continue;
-    put(bytes, m.texture->width);
-    put(bytes, m.texture->height);
-    put_array(bytes, m.texture->rgba);
+    put_value(bytes, std::array<std::uint8_t, 3>{m.has_color, m.has_uvs, m.vertex_colored});
+    put_value(bytes, m.color);
   }
   put_array(bytes, look.triangle_material);
   put_array(bytes, look.corner_uv);
   put_array(bytes, look.corner_color);
-  put(bytes, static_cast<std::int64_t>(look.warnings.size()));
+  put_value(bytes, static_cast<std::int64_t>(look.warnings.size()));
   for (const std::string& w : look.warnings) put_string(bytes, w);
 }
 
 SurfaceLook decode_look(const std::string& bytes, size_t& offset) {
-  Reader in(bytes, offset);
+  ByteReader in(bytes, offset);
   SurfaceLook look;
-  const auto materials = in.get<std::int64_t>();
-  RECOIL_CHECK(materials >= 0 && static_cast<size_t>(materials) <= bytes.size(), "materials " << materials);
-  for (std::int64_t i = 0; i < materials; ++i) {
-    LookMaterial m;
-    m.name = get_string(in);
-    m.has_color = in.get<std::uint8_t>() != 0;
-    m.color = in.get<std::array<float, 3>>();
-    if (in.get<std::uint8_t>() != 0) {
-      auto image = std::make_shared<LookImage>();
-      image->width = in.get<int>();
-      image->height = in.get<int>();
-      image->rgba = in.get_array<std::uint8_t>();
-      RECOIL_CHECK(image->width > 0 && image->height > 0 &&
-                       image->rgba.size() == static_cast<size_t>(image->width) * static_cast<size_t>(image->height) * 4,
-                   "texture " << image->width << " x " << image->height << " in " << image->rgba.size() << " bytes");
-      m.texture = std::move(image);
-    }
-    look.materials.push_back(std::move(m));
+  look.materials.resize(in.count(1));
+  for (LookMaterial& m : look.materials) {
+    m.name = in.string();
+    const auto flags = in.value<std::array<std::uint8_t, 3>>();
+    m.has_color = flags[0] != 0;
+    m.has_uvs = flags[1] != 0;
+    m.vertex_colored = flags[2] != 0;
+    m.color = in.value<std::array<float, 3>>();
   }
-  look.triangle_material = in.get_array<std::int32_t>();
-  look.corner_uv = in.get_array<float>();
-  look.corner_color = in.get_array<float>();
-  const auto warnings = in.get<std::int64_t>();
-  RECOIL_CHECK(warnings >= 0 && static_cast<size_t>(warnings) <= bytes.size(), "warnings " << warnings);
-  for (std::int64_t i = 0; i < warnings; ++i) look.warnings.push_back(get_string(in));
+  look.triangle_material = in.array<std::int32_t>();
+  look.corner_uv = in.array<float>();
+  look.corner_color = in.array<float>();
+  look.warnings.resize(in.count(1));
+  for (std::string& w : look.warnings) w = in.string();
+  offset = in.offset();
   const size_t triangles = look.triangle_material.size();
   RECOIL_CHECK((look.corner_uv.empty() || look.corner_uv.size() == 6 * triangles) &&
                    (look.corner_color.empty() || look.corner_color.size() == 9 * triangles),
@@ -152,6 +83,26 @@ SurfaceLook decode_look(const std::string& bytes, size_t& offset) {
   for (std::int32_t m : look.triangle_material)
     RECOIL_CHECK(m >= 0 && static_cast<size_t>(m) < look.materials.size(), "material index " << m);
   return look;
+}
+
+std::string printable(const std::string& text, size_t limit) {
+  std::string out;
+  for (size_t i = 0; i < text.size();) {
+    if (out.size() >= limit) return out + "...";
+    const auto byte = static_cast<unsigned char>(text[i]);
+    // A whole UTF-8 sequence is kept; a control character or a stray byte is not.
+    const size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xe ? 3 : (byte >> 3) == 0x1e ? 4 : 0;
+    bool whole = length > 0 && i + length <= text.size();
+    for (size_t k = 1; whole && k < length; ++k) whole = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
+    if (!whole || byte < 0x20 || byte == 0x7f) {
+      out.push_back('?');
+      ++i;
+      continue;
+    }
+    out.append(text, i, length);
+    i += length;
+  }
+  return out;
 }
 
 }  // namespace recoil::sim

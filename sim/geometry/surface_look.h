@@ -9,29 +9,26 @@
 #include <string>
 #include <vector>
 
+#include "core/rgba_image.h"
+
 namespace recoil::sim {
 
-// 8-bit RGBA, sRGB-encoded colour, rows top first (as image files store them).
-struct LookImage {
-  int width = 0;
-  int height = 0;
-  std::vector<std::uint8_t> rgba;  // width * height * 4 bytes
-};
-
 struct LookMaterial {
-  std::string name;
+  std::string name;  // as the file names it, control characters replaced
   // The material's own base (diffuse) colour, linear RGB; absent when the
   // file gave none (assimp's default material), so the body's colour shows.
   bool has_color = false;
   std::array<float, 3> color = {1.0f, 1.0f, 1.0f};
-  std::shared_ptr<const LookImage> texture;  // base-colour map, sampled with the corner UVs; null: none
+  std::shared_ptr<const RgbaImage> texture;  // base-colour map (sRGB), sampled with the corner UVs; null: none
+  bool has_uvs = false;         // its triangles carry texture coordinates
+  bool vertex_colored = false;  // its triangles carry vertex colours
 };
 
 struct SurfaceLook {
   std::vector<LookMaterial> materials;
   std::vector<std::int32_t> triangle_material;  // #F indices into materials
   std::vector<float> corner_uv;     // #F*6: (u, v) of corners 0, 1, 2 of each triangle; empty: no UVs
-  std::vector<float> corner_color;  // #F*9: linear RGB of each corner; empty: no vertex colours
+  std::vector<float> corner_color;  // #F*9: linear RGB of each corner, in [0, 1]; empty: no vertex colours
   std::vector<std::string> warnings;  // what could not be read (a missing texture), to tell the user
 
   int num_triangles() const { return static_cast<int>(triangle_material.size()); }
@@ -45,14 +42,16 @@ SurfaceLook select_triangles(const SurfaceLook& look, const std::vector<int>& ke
 // The look after every triangle's corners 1 and 2 were swapped (a mirroring transform).
 SurfaceLook with_swapped_corners(const SurfaceLook& look);
 
-}  // namespace recoil::sim
-
-namespace recoil::sim {
-
-// The look as bytes and back (the mesh reader's child hands it to the parent).
-// decode_look reads from `offset`, moves it past what it read, and aborts
-// (RECOIL_CHECK) on bytes encode_look did not write.
+// The look as bytes and back (the mesh reader's child hands it to the
+// parent), textures left out: they are decoded in children of their own.
 void encode_look(const SurfaceLook& look, std::string& bytes);
+// Reads what encode_look wrote from `offset` and moves it past; aborts
+// (RECOIL_CHECK) on bytes encode_look did not write.
 SurfaceLook decode_look(const std::string& bytes, size_t& offset);
+
+// Text from a file made safe to print and to put in JSON: control characters
+// and bytes that are not UTF-8 become '?', and at most about `limit` bytes
+// are kept ("..." marks a cut).
+std::string printable(const std::string& text, size_t limit = 120);
 
 }  // namespace recoil::sim

@@ -130,17 +130,14 @@ TEST(SurfaceLook, MirroringSwapsTheCornersWithTheTriangles) {
     }
 }
 
-TEST(SurfaceLook, BytesRoundTrip) {
+TEST(SurfaceLook, BytesRoundTripWithoutTextures) {
   SurfaceLook look;
   LookMaterial m;
   m.name = "m";
   m.has_color = true;
+  m.has_uvs = true;
   m.color = {0.25f, 0.5f, 0.75f};
-  auto image = std::make_shared<LookImage>();
-  image->width = 2;
-  image->height = 1;
-  image->rgba = {1, 2, 3, 4, 5, 6, 7, 8};
-  m.texture = image;
+  m.texture = std::make_shared<RgbaImage>(2, 1);  // decoded apart, in a child of its own
   look.materials = {m, LookMaterial{}};
   look.triangle_material = {1, 0};
   look.corner_uv = {0, 1, 2, 3, 4, 5, 6, 7, 8, 9, 10, 11};
@@ -156,9 +153,42 @@ TEST(SurfaceLook, BytesRoundTrip) {
   EXPECT_EQ(back.warnings, look.warnings);
   ASSERT_EQ(back.materials.size(), 2u);
   EXPECT_EQ(back.materials[0].color, m.color);
-  ASSERT_TRUE(back.materials[0].texture);
-  EXPECT_EQ(back.materials[0].texture->rgba, image->rgba);
-  EXPECT_FALSE(back.materials[1].texture);
+  EXPECT_TRUE(back.materials[0].has_uvs);
+  EXPECT_FALSE(back.materials[0].vertex_colored);
+  EXPECT_FALSE(back.materials[0].texture);
+}
+
+TEST(SurfaceLook, TextFromFilesIsPrintable) {
+  EXPECT_EQ(printable("wood\x1b[31m\n"), "wood?[31m?");
+  EXPECT_EQ(printable("caf\xc3\xa9"), "caf\xc3\xa9");  // UTF-8 kept
+  EXPECT_EQ(printable("a\xe9" "b"), "a?b");            // a Latin-1 byte is not UTF-8
+  EXPECT_EQ(printable(std::string(500, 'x'), 10), std::string(10, 'x') + "...");
+}
+
+TEST(SurfaceLook, TextureNamedInAnotherCaseOrPathIsFoundBesideTheMesh) {
+  const fs::path dir = recoil::test::scratch_dir("surface_look_case");
+  // The Cesium logo copied in under a name in capitals, named in the MTL in lower
+  // case behind a Windows path from the machine it was made on.
+  fs::copy_file(kModels / "glTF2/BoxTextured-glTF/CesiumLogoFlat.png", dir / "LOGO.PNG");
+  const fs::path obj = write_two_material_square(dir, "newmtl red\nKd 1 1 1\nmap_Kd C:\\art\\textures\\logo.png\nnewmtl blue\nKd 0 0 1\n");
+  const TriMesh square = import_surface(obj);
+  ASSERT_TRUE(square.look);
+  EXPECT_TRUE(square.look->warnings.empty()) << square.look->warnings.front();
+  const LookMaterial& red = square.look->materials[static_cast<size_t>(square.look->triangle_material[0])];
+  ASSERT_TRUE(red.texture);
+  EXPECT_EQ(red.texture->width, 211);
+}
+
+TEST(SurfaceLook, ABrokenTextureCostsOnlyItself) {
+  const fs::path dir = recoil::test::scratch_dir("surface_look_broken");
+  write_text(dir / "broken.png", "\x89PNG\r\n\x1a\n not really");
+  const fs::path obj = write_two_material_square(dir, "newmtl red\nKd 1 0 0\nmap_Kd broken.png\nnewmtl blue\nKd 0 0 1\n");
+  const TriMesh square = import_surface(obj);
+  ASSERT_TRUE(square.look);
+  EXPECT_EQ(square.num_triangles(), 2);
+  ASSERT_EQ(square.look->warnings.size(), 1u);
+  EXPECT_NE(square.look->warnings[0].find("broken.png"), std::string::npos) << square.look->warnings[0];
+  EXPECT_NE(square.look->warnings[0].find("stb_image"), std::string::npos) << square.look->warnings[0];
 }
 
 }  // namespace
