@@ -7,6 +7,7 @@
 #include "core/check.h"
 #include "sim/collision/embree_scene.h"
 #include "sim/collision/exact_distance.h"
+#include "sim/geometry/mesh_refine.h"
 #include "sim/geometry/mesh_simplify.h"
 #include "sim/geometry/mesh_stats.h"
 #include "sim/geometry/winding_number.h"
@@ -78,7 +79,7 @@ Points vertex_normals(const TriMesh& m) {
 CollisionProxy offset_outward(EmbreeDevice& device, const TriMesh& mesh, const Points& mesh_normals,
                               const SimplifiedMesh& simple) {
   CollisionProxy out;
-  out.simplified = true;
+  out.separate = true;
   out.surface = simple.mesh;
   const int n = out.surface.num_vertices();
   const double extent = bounding_box(mesh).extent().maxCoeff();
@@ -131,16 +132,24 @@ int collision_budget(const CollisionSurfaceDesc& desc, const TriMesh& mesh, doub
   return triangles_for_edge_length(mesh, desc.edge_length > 0.0 ? desc.edge_length : default_collision_edge(cell, margin));
 }
 
-CollisionProxy make_collision_proxy(EmbreeDevice& device, const TriMesh& mesh, int max_triangles) {
-  const auto kept = [&] {
-    CollisionProxy out;
-    out.surface = mesh;
-    return out;
-  };
-  if (max_triangles <= 0 || mesh.num_triangles() <= max_triangles) return kept();
-  const SimplifiedMesh simple = simplify_mesh(mesh, max_triangles);
-  if (simple.mesh.num_triangles() >= mesh.num_triangles() || simple.mesh.empty()) return kept();
-  return offset_outward(device, mesh, vertex_normals(mesh), simple);
+CollisionProxy make_collision_proxy(EmbreeDevice& device, const TriMesh& mesh, int max_triangles, double max_edge) {
+  CollisionProxy out;
+  out.surface = mesh;
+  if (max_triangles > 0 && mesh.num_triangles() > max_triangles) {
+    const SimplifiedMesh simple = simplify_mesh(mesh, max_triangles);
+    if (simple.mesh.num_triangles() < mesh.num_triangles() && !simple.mesh.empty())
+      out = offset_outward(device, mesh, vertex_normals(mesh), simple);
+  }
+  // Splitting straight edges keeps the shape exactly: no further offset. An
+  // edge as long as the bound but for rounding (a lattice-matched face's
+  // diagonal) is not split.
+  const double bound = max_edge * (1.0 + 1e-9);
+  if (max_edge > 0.0 && longest_edge(out.surface) > bound) {
+    out.surface = split_long_edges(out.surface, bound);
+    out.separate = true;
+  }
+  out.surface.look.reset();  // contact's surface is never drawn
+  return out;
 }
 
 }  // namespace recoil::sim

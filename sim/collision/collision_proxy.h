@@ -3,7 +3,11 @@
 // needs, a simplified copy (sim/geometry/mesh_simplify.h) pushed outward,
 // each part by its own measured deviation, so that the original (the render surface) stays
 // inside what contact sees and never visibly sinks into the ground or into
-// another body. A mesh already coarse enough is its own collision surface.
+// another body. A deformable body's surface also has no edge longer than a
+// lattice cell's face diagonal (sim/geometry/mesh_refine.h): contact on a
+// coarse mesh's corners alone leaves the cells between them to sag through
+// the ground.
+// A mesh within both bounds is its own collision surface.
 #include "sim/geometry/tri_mesh.h"
 
 namespace recoil::sim {
@@ -24,8 +28,8 @@ struct CollisionSurfaceDesc {
 int collision_budget(const CollisionSurfaceDesc& desc, const TriMesh& mesh, double cell, double margin);
 
 struct CollisionProxy {
-  TriMesh surface;         // what contact sees (a copy of the mesh when not simplified)
-  bool simplified = false;
+  TriMesh surface;         // what contact sees (the mesh itself when not `separate`)
+  bool separate = false;   // simplified or refined: the mesh is kept apart, to draw
   // How far the original's vertices stood outside the simplified surface, m:
   // the largest offset along the vertex normals that put them inside it
   // (each collision vertex moves by what its own neighbourhood needed).
@@ -33,8 +37,9 @@ struct CollisionProxy {
 };
 
 // Collision surface for `mesh` (#V by 3, #F by 3) with at most
-// `max_triangles` triangles; <= 0 or a mesh within the target keeps the mesh.
-CollisionProxy make_collision_proxy(EmbreeDevice& device, const TriMesh& mesh, int max_triangles);
+// `max_triangles` triangles (<= 0: no bound) and no edge longer than
+// `max_edge` m (<= 0: no bound); a mesh within both keeps the mesh.
+CollisionProxy make_collision_proxy(EmbreeDevice& device, const TriMesh& mesh, int max_triangles, double max_edge = 0.0);
 
 // Triangles of the surface tiled by equilateral triangles of edge `edge`
 // (m): area / (sqrt(3) / 4 edge^2), at least 4.

@@ -73,13 +73,13 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
   // The cell a deformable body of this shape would have at the default resolution.
   const double cell = bounding_box(mesh).extent().maxCoeff() / kDefaultResolution;
   const CollisionProxy proxy = make_collision_proxy(device, mesh, collision_budget(desc.collision, mesh, cell, margin));
-  if (proxy.simplified) {
+  if (proxy.separate) {
     body.render_local = mesh.vertices.rowwise() - reference.transpose();
     body.render_triangles = mesh.triangles;
     body.triangles = proxy.surface.triangles;
     body.collision_deviation = proxy.deviation;
   }
-  const Points& collision = proxy.simplified ? proxy.surface.vertices : mesh.vertices;
+  const Points& collision = proxy.separate ? proxy.surface.vertices : mesh.vertices;
   body.local = collision.rowwise() - reference.transpose();
   return body;
 }

@@ -4,6 +4,8 @@
 // exit 2 naming the option.
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
+
 #include <fstream>
 #include <nlohmann/json.hpp>
 

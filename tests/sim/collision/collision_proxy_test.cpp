@@ -32,7 +32,7 @@ TEST(CollisionProxy, AFineMeshGetsASimplifiedSurfaceThatHoldsItInside) {
   const CollisionProxy proxy = make_collision_proxy(device, fine, budget);
   std::cout << fine.num_triangles() << " triangles -> " << proxy.surface.num_triangles() << " (budget " << budget
             << "), offset " << proxy.deviation * 1e3 << " mm\n";
-  ASSERT_TRUE(proxy.simplified);
+  ASSERT_TRUE(proxy.separate);
   EXPECT_LE(proxy.surface.num_triangles(), budget);
   EXPECT_GT(proxy.surface.num_triangles(), budget / 2);
   EXPECT_GT(proxy.deviation, 0.0);
@@ -55,7 +55,7 @@ TEST(CollisionProxy, ThinPartsLostInTheSimplificationMoveOnlyTheirOwnRegionOut) 
   const TriMesh human = import_surface("/usr/share/assimp/models/Collada/human.zae");
   EmbreeDevice device;
   const CollisionProxy proxy = make_collision_proxy(device, human, collision_budget({}, human, 0.2074, 0.002));
-  ASSERT_TRUE(proxy.simplified);
+  ASSERT_TRUE(proxy.separate);
   const double bottom = human.vertices.col(1).minCoeff() - proxy.surface.vertices.col(1).minCoeff();
   std::cout << proxy.surface.num_triangles() << " collision triangles, largest offset " << proxy.deviation * 1e3
             << " mm, below the feet " << bottom * 1e3 << " mm\n";
@@ -70,7 +70,7 @@ TEST(CollisionProxy, ACoarseMeshIsItsOwnCollisionSurface) {
   EmbreeDevice device;
   const TriMesh box = make_box({0.2, 0.2, 0.2}, 8);
   const CollisionProxy proxy = make_collision_proxy(device, box, collision_budget({}, box, 0.2 / 8, 0.002));
-  EXPECT_FALSE(proxy.simplified);
+  EXPECT_FALSE(proxy.separate);
   EXPECT_EQ(proxy.surface.vertices, box.vertices);
   EXPECT_EQ(proxy.deviation, 0.0);
   CollisionSurfaceDesc keep;
