@@ -30,6 +30,15 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
           },
           "0 (fit) or METRES"))
       ->group(group);
+  command.add_option("--azimuth", options.azimuth,
+                     "Camera direction about the vertical, degrees from +Z towards +X (a turntable's first frame)")
+      ->check(CLI::Range(kAngleRange.lo, kAngleRange.hi))->group(group);
+  command.add_option("--fov", options.fov, "Vertical field of view, degrees")->check(CLI::Range(1.0, 170.0))->group(group);
+  command.add_option("--camera-position", options.camera_position,
+                     "Camera position X,Y,Z in metres (a fixed camera; not with --camera-distance or an orbit)")
+      ->group(group);
+  command.add_option("--camera-target", options.camera_target, "Point X,Y,Z the camera looks at, metres (default: the scene's centre)")
+      ->group(group);
   command.add_option("--png-level", options.png_level, "PNG compression 0 (fastest) to 9 (smallest)")
       ->check(CLI::Range(0, 9))->group(group)->capture_default_str();
   command.add_option("--gl", options.gl,
@@ -45,6 +54,16 @@ render::Rgb parse_color(const std::string& text, const std::string& what) {
   if (hex.size() != 6 || std::sscanf(hex.c_str(), "%2x%2x%2x%n", &r, &g, &b, &consumed) != 3 || consumed != 6)
     throw bad_input(what + ": expected a colour #rrggbb, got '" + text + "'");
   return {r / 255.0f, g / 255.0f, b / 255.0f};
+}
+
+Eigen::Vector3d parse_point(const std::string& text, const std::string& what) {
+  Eigen::Vector3d p;
+  int consumed = 0;
+  if (std::sscanf(text.c_str(), "%lf,%lf,%lf%n", &p.x(), &p.y(), &p.z(), &consumed) != 3 ||
+      consumed != static_cast<int>(text.size()) || !p.allFinite() ||
+      (p.array().abs() > kCoordinateRange.hi).any())
+    throw bad_input(what + ": expected X,Y,Z in metres (each " + kCoordinateRange.describe() + "), got '" + text + "'");
+  return p;
 }
 
 render::RenderSettings to_render_settings(const RenderOptions& options) {

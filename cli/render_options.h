@@ -2,6 +2,7 @@
 // The render options shared by `run`, `drop` and `turntable`,
 // parsed from the command line into render::RenderSettings.
 #include <CLI/CLI.hpp>
+#include <Eigen/Core>
 #include <optional>
 #include <string>
 
@@ -19,12 +20,17 @@ struct RenderOptions {
   bool wireframe = false;
   std::string color;                    // #rrggbb, empty: the default palette
   double camera_distance = 0.0;         // metres from the target; 0: fit the scene
+  double azimuth = 0.0;                 // degrees about +y from +z (only when given)
+  double fov = 40.0;                    // vertical, degrees (only when given)
+  std::string camera_position;          // "x,y,z" metres (only when given)
+  std::string camera_target;            // "x,y,z" metres (only when given)
   int png_level = 1;
   std::string gl = "auto";              // the OpenGL backend: auto, osmesa or egl (a property of the machine, not the scene)
 };
 
 // Adds --resolution, --fps, --msaa, --no-shadows, --background, --wireframe,
-// --color, --camera-distance, --png-level, --gl to `command`, in a "Rendering" group.
+// --color, --camera-distance, --azimuth, --fov, --camera-position,
+// --camera-target, --png-level, --gl to `command`, in a "Rendering" group.
 void add_render_options(CLI::App& command, RenderOptions& options);
 
 // Validated settings; throws recoil::Error(bad_input) naming the option.
@@ -34,6 +40,9 @@ render::PngOptions to_png_options(const RenderOptions& options);
 // "#rrggbb" (or "rrggbb") as sRGB components in [0, 1]; throws bad_input
 // naming `what` (the option or field) for anything else.
 render::Rgb parse_color(const std::string& text, const std::string& what);
+
+// "x,y,z" as a point in metres; throws bad_input naming `what` otherwise.
+Eigen::Vector3d parse_point(const std::string& text, const std::string& what);
 
 // The colour of the i-th body when none is given: a soft, distinguishable
 // palette of 8-bit colours, so a scene file records them exactly.

@@ -33,6 +33,29 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
     for (SceneBody& body : scene.bodies)
       if (!body.is_plane()) body.color = color, body.color_given = true;
   }
+  CameraDesc& camera = scene.camera;
+  const char* mode = camera.mode == CameraMode::orbit ? "orbits" : "follows a body";
+  if (given(o, "--camera-position")) {
+    if (camera.mode != CameraMode::fixed)
+      throw bad_input("--camera-position: the camera of " + scene.label() + " " + mode + "; a position needs a fixed camera");
+    camera.position = parse_point(o.render.camera_position, "--camera-position");
+    camera.has_position = true;
+    camera.distance = 0.0;  // a position leaves no distance to keep
+  }
+  if (given(o, "--camera-target")) {
+    if (camera.mode == CameraMode::follow)
+      throw bad_input("--camera-target: the camera of " + scene.label() + " follows a body, which is its target");
+    camera.target = parse_point(o.render.camera_target, "--camera-target");
+    camera.has_target = true;
+  }
+  if (camera.has_position && camera.has_target && (camera.position - camera.target).norm() < 1e-9)
+    throw bad_input("--camera-position: must differ from the camera's target");
+  if (given(o, "--azimuth")) {
+    if (camera.mode == CameraMode::fixed && camera.has_position)
+      throw bad_input("--azimuth: " + scene.label() + " places its camera at a position, which sets its direction");
+    camera.azimuth = o.render.azimuth;
+  }
+  if (given(o, "--fov")) camera.fov = o.render.fov;
   if (given(o, "--camera-distance")) {
     // A camera standing at a given position has no distance to change.
     if (o.render.camera_distance > 0.0 && scene.camera.mode == CameraMode::fixed && scene.camera.has_position)

@@ -235,6 +235,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     while (world->counters().steps < target && !pending_interrupt() && advance(acc, k)) {
     }
     if (result.failed || pending_interrupt()) break;
+    if (view) view->track(world->body_bounds());
     if (next >= selected.size() || selected[next] != k) continue;
     ++next;
     FrameTimes times;

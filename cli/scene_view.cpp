@@ -49,7 +49,6 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
       m_render.meshes.push_back(to_render_mesh(slab_for(plane), kSlabColor));
     }
   }
-  sim::Aabb box;
   RenderLookCache looks;
   for (size_t i = 0; i < surfaces.size(); ++i) {
     const sim::BodySurface& s = surfaces[i];
@@ -67,20 +66,28 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
       // Room around the body so its surroundings show: a few body sizes.
       m_follow_radius = std::max(1.5 * b.extent().norm(), 0.1);
     }
-    box.extend(b.min);
-    box.extend(b.max);
-    // Keep the landing spot in view: the footprint on the ground too.
-    if (have_ground) {
-      box.extend(Eigen::Vector3d(b.min.x(), m_render.ground_height, b.min.z()));
-      box.extend(Eigen::Vector3d(b.max.x(), m_render.ground_height, b.max.z()));
-    }
+    m_fit_box.extend(b.min);
+    m_fit_box.extend(b.max);
   }
-  if (!box.valid()) {
-    box.extend(Eigen::Vector3d::Constant(-0.5));
-    box.extend(Eigen::Vector3d::Constant(0.5));
+  m_have_ground = have_ground;
+  track({});
+  if (!m_fit_box.valid()) {
+    m_fit_box.extend(Eigen::Vector3d::Constant(-0.5));
+    m_fit_box.extend(Eigen::Vector3d::Constant(0.5));
   }
-  m_fit_target = box.center();
-  m_fit_radius = std::max(0.5 * box.extent().norm(), 0.05);
+}
+
+void SceneView::track(const std::vector<sim::Aabb>& bounds) {
+  for (const sim::Aabb& b : bounds) {
+    if (!b.valid() || !b.min.allFinite() || !b.max.allFinite()) continue;
+    m_fit_box.extend(b.min);
+    m_fit_box.extend(b.max);
+  }
+  // Keep the landing spot in view: the footprint on the ground too.
+  if (m_have_ground && m_fit_box.valid()) {
+    m_fit_box.extend(Eigen::Vector3d(m_fit_box.min.x(), m_render.ground_height, m_fit_box.min.z()));
+    m_fit_box.extend(Eigen::Vector3d(m_fit_box.max.x(), m_render.ground_height, m_fit_box.max.z()));
+  }
 }
 
 const render::RenderScene& SceneView::update(const std::vector<sim::BodySurface>& surfaces) {
@@ -99,10 +106,11 @@ render::Camera SceneView::camera(int frame, int frame_count) const {
     if (c.distance > 0) cam.eye = cam.target + c.distance * (cam.eye - cam.target).normalized();
     return cam;
   };
-  const Eigen::Vector3d target = c.has_target ? c.target : m_fit_target;
+  const Eigen::Vector3d target = c.has_target ? c.target : m_fit_box.center();
+  const double fit_radius = std::max(0.5 * m_fit_box.extent().norm(), 0.05);
   switch (c.mode) {
     case CameraMode::fixed: {
-      if (!c.has_position) return place(target, m_fit_radius, c.azimuth);
+      if (!c.has_position) return place(target, fit_radius, c.azimuth);
       render::Camera cam;
       cam.eye = c.position;
       cam.target = target;
@@ -110,15 +118,15 @@ render::Camera SceneView::camera(int frame, int frame_count) const {
       return cam;
     }
     case CameraMode::orbit:
-      return place(target, m_fit_radius, render::orbit_azimuth_deg(frame - 1, frame_count, c.turns, c.azimuth));
+      return place(target, fit_radius, render::orbit_azimuth_deg(frame - 1, frame_count, c.turns, c.azimuth));
     case CameraMode::follow: {
-      if (m_follow < 0) return place(target, m_fit_radius, c.azimuth);
+      if (m_follow < 0) return place(target, fit_radius, c.azimuth);
       const sim::Aabb& b = m_follow_box;
-      if (!b.valid() || !b.min.allFinite() || !b.max.allFinite()) return place(target, m_fit_radius, c.azimuth);
+      if (!b.valid() || !b.min.allFinite() || !b.max.allFinite()) return place(target, fit_radius, c.azimuth);
       return place(b.center(), m_follow_radius, c.azimuth);
     }
   }
-  return place(target, m_fit_radius, c.azimuth);
+  return place(target, fit_radius, c.azimuth);
 }
 
 }  // namespace recoil::cli

@@ -14,9 +14,17 @@ namespace recoil::cli {
 
 class SceneView {
  public:
-  // `surfaces`: the world's surfaces at time 0 (they fix the framing of a
+  // `surfaces`: the world's surfaces at time 0 (they start the framing of a
   // camera without a position); `aspect` = width / height.
   SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>& surfaces, double aspect);
+
+  // Widens the framing of a camera without a position to hold `bounds` (the
+  // bodies at one frame, sim::World::body_bounds) as well as everything
+  // tracked before. Called for every frame, drawn or not, so that a frame's
+  // view does not depend on which frames were drawn. The framing only ever
+  // widens: a body that slides or bounces away stays in view, and the
+  // camera holds still while everything stays within what it frames.
+  void track(const std::vector<sim::Aabb>& bounds);
 
   // Updates the meshes to `surfaces` (same bodies as at construction).
   const render::RenderScene& update(const std::vector<sim::BodySurface>& surfaces);
@@ -31,8 +39,8 @@ class SceneView {
   int m_follow = -1;                              // surface index of the followed body
   sim::Aabb m_follow_box;                         // its current bounds
   double m_follow_radius = 0.1;                   // m: fixed at frame 1 so the view does not breathe
-  Eigen::Vector3d m_fit_target = Eigen::Vector3d::Zero();
-  double m_fit_radius = 1.0;
+  sim::Aabb m_fit_box;        // everything the bodies have covered, and their footprints on the ground
+  bool m_have_ground = false;
 };
 
 }  // namespace recoil::cli

@@ -22,7 +22,8 @@ nlohmann::json build_turntable_scene(const TurntableSettings& settings, Imported
   scene["description"] = "built by recoil turntable";
   scene["simulation"]["settle"] = settings.settle;
   scene["render"] = {{"fps", settings.fps},
-                     {"camera", {{"mode", "orbit"}, {"azimuth", 0}, {"elevation", settings.elevation}, {"turns", 1}}}};
+                     // A three-quarter view first, which shows two sides of a box, not one.
+                     {"camera", {{"mode", "orbit"}, {"azimuth", 30}, {"elevation", settings.elevation}, {"turns", 1}}}};
   return scene;
 }
 

@@ -288,6 +288,23 @@ std::vector<BodySurface> World::surfaces() const {
   return out;
 }
 
+std::vector<Aabb> World::body_bounds() const {
+  std::vector<Aabb> out;
+  for (const DeformableBody& body : m_bodies) {
+    Aabb box;
+    for (int n = 0; n < body.num_nodes; ++n) box.extend(m_x.segment<3>(3 * (body.node_offset + n)));
+    out.push_back(box);
+  }
+  Points posed;
+  for (const RigidBody& body : m_rigid) {
+    world_points(body.local, body.pose, posed);
+    Aabb box;
+    for (Eigen::Index v = 0; v < posed.rows(); ++v) box.extend(posed.row(v).transpose());
+    out.push_back(box);
+  }
+  return out;
+}
+
 std::vector<BodyStats> World::stats() const {
   std::vector<BodyStats> out;
   for (size_t i = 0; i < m_bodies.size(); ++i) {
