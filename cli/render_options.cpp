@@ -17,6 +17,10 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
   command.add_option("--msaa", options.msaa, "Anti-aliasing samples per pixel: 0, 2 or 4")
       ->check(CLI::IsMember({0, 2, 4}))->group(group)->capture_default_str();
   command.add_flag("--no-shadows", options.no_shadows, "Skip the key light's shadow (faster)")->group(group);
+  command.add_flag("--no-ground", options.no_ground,
+                   "Draw no ground (it still holds the bodies up); over --background transparent the ground is "
+                   "otherwise a shadow catcher: the shadows alone")
+      ->group(group);
   command.add_option("--background", options.background, "Background #rrggbb, or 'transparent' for alpha 0")
       ->group(group)->capture_default_str();
   command.add_flag("--wireframe", options.wireframe, "Draw triangle edges over the shading")->group(group);
@@ -77,6 +81,7 @@ render::RenderSettings to_render_settings(const RenderOptions& options) {
   settings.height = height;
   settings.msaa = options.msaa;
   settings.shadows = !options.no_shadows;
+  settings.ground = !options.no_ground;
   settings.wireframe = options.wireframe;
   if (options.background == "transparent") settings.transparent_background = true;
   else settings.background = parse_color(options.background, "--background");

@@ -16,6 +16,7 @@ struct RenderOptions {
   double fps = 30.0;
   int msaa = 4;
   bool no_shadows = false;
+  bool no_ground = false;               // the ground plane is not drawn
   std::string background = "#1d2127";   // #rrggbb or "transparent"
   bool wireframe = false;
   std::string color;                    // #rrggbb, empty: the default palette

@@ -24,6 +24,7 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
   if (given(o, "--fps")) scene.render.fps = o.render.fps;
   if (given(o, "--msaa")) scene.render.msaa = o.render.msaa;
   if (given(o, "--no-shadows")) scene.render.no_shadows = true;
+  if (given(o, "--no-ground")) scene.render.no_ground = true;
   if (given(o, "--background")) scene.render.background = o.render.background;
   if (given(o, "--wireframe")) scene.render.wireframe = true;
   if (given(o, "--png-level")) scene.render.png_level = o.render.png_level;

@@ -102,8 +102,9 @@ void parse_render(const JsonCursor& c, SceneDesc& scene) {
   r.background = c.string_or("background", r.background);
   if (r.background != "transparent") parse_color(r.background, c.file() + ": " + c.pointer() + "/background");
   const JsonCursor ground = c.child_or_empty("ground");
-  ground.expect_object({"grid"});
+  ground.expect_object({"grid", "visible"});
   scene.grid = ground.boolean_or("grid", true);
+  r.no_ground = !ground.boolean_or("visible", true);
   parse_camera(c.child_or_empty("camera"), scene);
 }
 

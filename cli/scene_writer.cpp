@@ -122,7 +122,7 @@ json render_json(const SceneDesc& scene) {
           {"background", r.background},
           {"wireframe", r.wireframe},
           {"png_level", r.png_level},
-          {"ground", {{"grid", scene.grid}}},
+          {"ground", {{"grid", scene.grid}, {"visible", !r.no_ground}}},
           {"camera", camera_json(scene.camera)}};
 }
 

@@ -133,6 +133,7 @@ struct Renderer::Impl {
   // Index: shadows + 2 * textured (the key light's shadow lookups, a base-colour map).
   std::array<ShaderProgram, 4> mesh_programs;
   std::array<ShaderProgram, 4> ground_programs;  // index: shadows + 2 * grid
+  ShaderProgram catcher_program;  // the ground over a transparent background
   ShaderProgram depth_program;
   ShaderProgram wire_program;
   Ground ground;
@@ -154,6 +155,7 @@ struct Renderer::Impl {
             ShaderProgram("ground+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, false)),
             ShaderProgram("ground+grid", shaders::ground_vertex(), shaders::ground_fragment(false, true)),
             ShaderProgram("ground+grid+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, true))},
+        catcher_program("shadow catcher", shaders::ground_vertex(), shaders::shadow_catcher_fragment()),
         depth_program("depth", shaders::depth_vertex(), shaders::depth_fragment()),
         wire_program("wireframe", shaders::mesh_vertex(), shaders::flat_fragment()) {}
 
@@ -165,6 +167,7 @@ struct Renderer::Impl {
   void draw_mesh(const RenderSettings& settings, const RenderMesh& mesh, const MeshBuffers& buffers,
                  const MeshPrograms& programs);
   void draw_ground(const RenderSettings& settings, const RenderScene& scene, const Frame& frame);
+  void draw_shadow_catcher(const Frame& frame);
   void draw_transparent(const RenderSettings& settings, const RenderScene& scene, const Camera& camera,
                         const MeshPrograms& programs);
 };
@@ -220,7 +223,7 @@ Frame Renderer::Impl::upload(const RenderSettings& settings, const RenderScene& 
 
   const Eigen::Vector3d reach = Eigen::Vector3d::Constant(frame.radius);
   Bounds visible{frame.center - reach, frame.center + reach};
-  if (scene.ground) {
+  if (scene.ground && settings.ground) {
     const GroundLayout& g = frame.ground;
     visible.add({Eigen::Vector3d(g.center_x - g.fade_end, g.height, g.center_z - g.fade_end),
                  Eigen::Vector3d(g.center_x + g.fade_end, g.height, g.center_z + g.fade_end)});
@@ -320,6 +323,10 @@ void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh&
 }
 
 void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
+  if (settings.transparent_background) {
+    draw_shadow_catcher(frame);
+    return;
+  }
   ShaderProgram& p = ground_programs[(frame.shadows ? 1 : 0) + (scene.grid ? 2 : 0)];
   set_common(p, frame);
   // The floor is flat and the lights directional, so its lighting is two
@@ -342,6 +349,29 @@ void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderSce
     glUniform4f(p.location("u_background"), frame.background[0], frame.background[1], frame.background[2], 1.0f);
   }
   ground.draw(g);
+}
+
+void Renderer::Impl::draw_shadow_catcher(const Frame& frame) {
+  if (!frame.shadows) return;  // nothing to catch
+  ShaderProgram& p = catcher_program;
+  set_common(p, frame);
+  // The share of the lit floor's light that a shadow takes away (luminance).
+  const StudioLights& lights = frame.lights;
+  const Eigen::Vector3f luma(0.2126f, 0.7152f, 0.0722f);
+  const float key = luma.dot(lights.key.color) * static_cast<float>(std::max(lights.key.to_light.y(), 0.0));
+  const float other = luma.dot(lights.fill.color) * static_cast<float>(std::max(lights.fill.to_light.y(), 0.0)) +
+                      luma.dot(lights.sky_ambient);
+  set(p, "u_shadow_strength", key + other > 0.0f ? key / (key + other) : 0.0f);
+  const GroundLayout& g = frame.ground;
+  glUniform2f(p.location("u_center"), static_cast<float>(g.center_x), static_cast<float>(g.center_z));
+  glUniform2f(p.location("u_fade"), static_cast<float>(g.fade_start), static_cast<float>(g.fade_end));
+  // Blended over the meshes' background, premultiplied; it writes no depth.
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  glDepthMask(GL_FALSE);
+  ground.draw(g);
+  glDepthMask(GL_TRUE);
+  glDisable(GL_BLEND);
 }
 
 void Renderer::Impl::draw_transparent(const RenderSettings& settings, const RenderScene& scene,
@@ -415,7 +445,7 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   // the opaque meshes so that early depth testing skips the pixels they cover;
   // it does not blend, so anything below the floor stays hidden even where
   // the floor has faded out.
-  if (scene.ground) draw_ground(settings, scene, frame);
+  if (scene.ground && settings.ground) draw_ground(settings, scene, frame);
   draw_transparent(settings, scene, camera, programs);
 
   target.read(image);

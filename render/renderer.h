@@ -24,6 +24,9 @@ struct RenderSettings {
   bool transparent_background = false;  // alpha 0 where nothing (not even the floor) is drawn
   bool wireframe = false;               // dark triangle edges over the shaded meshes
   GlBackend gl = GlBackend::automatic;  // which library gives the OpenGL context (context.h)
+  // The scene's ground plane is drawn (over a transparent background as a
+  // shadow catcher: the shadows alone); false: not at all, shadows on it neither.
+  bool ground = true;
 };
 
 class Renderer {

@@ -183,6 +183,26 @@ void main() {
 )";
 }
 
+std::string shadow_catcher_fragment() {
+  return fragment_header(true) + kShadow + R"(
+in vec3 v_world;
+in vec4 v_shadow;
+uniform vec2 u_center;           // scene centre on the ground (x, z)
+uniform vec2 u_fade;             // shadows fade out between these radii (metres), as the floor would
+uniform float u_shadow_strength; // the share of the floor's light the key gives
+out vec4 o_color;
+
+// Only the darkening a floor would show under the key's shadow, as black of
+// that coverage, premultiplied: composited over anything, it lays the shadow.
+void main() {
+  float r = length(v_world.xz - u_center);
+  float fade = 1.0 - smoothstep(u_fade.x, u_fade.y, r);
+  float shadow = u_shadow_strength * (1.0 - key_visibility(v_shadow)) * fade;
+  o_color = vec4(0.0, 0.0, 0.0, shadow);
+}
+)";
+}
+
 std::string depth_vertex() {
   return std::string(kHeader) + R"(
 layout(location = 0) in vec3 a_position;

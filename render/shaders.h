@@ -15,6 +15,9 @@ std::string mesh_fragment(bool shadows, bool textured);
 // The ground plane: lit like a matte mesh plus the grid and the distance fade.
 std::string ground_vertex();
 std::string ground_fragment(bool shadows, bool grid);
+// The ground as a shadow catcher (over a transparent background): the key
+// light's shadow alone, as black coverage; no floor colour, no grid.
+std::string shadow_catcher_fragment();
 // Depth only, from the key light (shadow map) — position attribute only.
 std::string depth_vertex();
 std::string depth_fragment();

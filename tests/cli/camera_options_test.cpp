@@ -1,7 +1,7 @@
 // The camera from the command line: --azimuth, --fov, --camera-position and
 // --camera-target reach the scene (and so its rerun), an option the scene's
-// camera cannot take is exit 2 naming it, and a turntable starts at a
-// three-quarter view.
+// camera cannot take is exit 2 naming it, a turntable starts at a
+// three-quarter view, and --no-ground leaves the floor undrawn.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -27,6 +27,19 @@ TEST(CameraOptions, PositionTargetAndFovReachTheScene) {
   EXPECT_EQ(camera["position"], nlohmann::json::parse("[0.8, 0.6, 0.8]"));
   EXPECT_EQ(camera["target"], nlohmann::json::parse("[0.0, 0.1, 0.0]"));
   EXPECT_EQ(camera["fov"], 30.0);
+}
+
+TEST(CameraOptions, NoGroundReachesTheSceneAndDrawsNoFloor) {
+  const fs::path dir = scratch_dir("no_ground");
+  for (const char* flag : {"", "--no-ground"}) {
+    const fs::path out = dir / (flag[0] ? "without" : "with");
+    const CommandResult r = run_recoil("turntable " + bunny() + " " + flag +
+                                       " --turn-frames 2 --frames 1 --resolution 96x64 -q -o " + shell_quote(out));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+  }
+  const nlohmann::json scene = nlohmann::json::parse(file_bytes(dir / "without/scene.json"));
+  EXPECT_EQ(scene["render"]["ground"]["visible"], false);
+  EXPECT_NE(file_bytes(dir / "with/frame_0001.png"), file_bytes(dir / "without/frame_0001.png"));
 }
 
 TEST(CameraOptions, TurntablesStartAtAThreeQuarterViewThatAzimuthTurns) {

@@ -270,6 +270,34 @@ TEST(Renderer, KeyLightCastsAShadowOnTheFloor) {
   EXPECT_EQ(brighter, 0);  // a shadow never adds light
 }
 
+TEST(Renderer, OverATransparentBackgroundTheGroundCatchesOnlyTheShadow) {
+  RenderScene scene;
+  scene.meshes = {test::make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.8f, 0.8f, 0.8f})};
+  Camera camera;
+  camera.eye = {0.0, 6.0, 0.01};  // looking down: the whole shadow is in view
+  camera.target = {0.0, 0.0, 0.0};
+  RenderSettings settings = small(4, true);
+  settings.transparent_background = true;
+  // Black pixels with some coverage: the shadow laid over nothing.
+  auto shadow_pixels = [&](const Image& image) {
+    int count = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const auto p = at(image, x, y);
+        count += p[3] > 40 && p[3] < 255 && p[0] == 0 && p[1] == 0 && p[2] == 0;
+      }
+    return count;
+  };
+  const Image caught = Renderer(settings).render(scene, camera);
+  std::cout << "shadow pixels caught: " << shadow_pixels(caught) << "\n";
+  EXPECT_GT(shadow_pixels(caught), 150);
+  // No floor colour, no grid: away from the box and its shadow, nothing at all.
+  EXPECT_EQ(at(caught, 2, 2)[3], 0);
+  EXPECT_EQ(at(caught, 93, 61)[3], 0);
+  settings.ground = false;  // no ground drawn: no shadow on it either
+  EXPECT_EQ(shadow_pixels(Renderer(settings).render(scene, camera)), 0);
+}
+
 TEST(Renderer, FloorFollowsGroundHeightAndToggles) {
   const RenderSettings settings = small(0);
   Renderer renderer(settings);
