@@ -47,7 +47,7 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
       ->check(CLI::Range(0, 9))->group(group)->capture_default_str();
   command.add_option("--gl", options.gl,
                      "OpenGL backend: osmesa (software), egl (Mesa's surfaceless EGL: llvmpipe, or the GPU of a "
-                     "render node) or auto (OSMesa where it works, else EGL); both draw identical frames on llvmpipe")
+                     "render node) or auto (OSMesa, else EGL); both draw identical frames on llvmpipe")
       ->check(CLI::IsMember({"auto", "osmesa", "egl"}))->group(group)->capture_default_str();
 }
 

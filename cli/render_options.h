@@ -29,7 +29,7 @@ struct RenderOptions {
   std::string gl = "auto";              // the OpenGL backend: auto, osmesa or egl (a property of the machine, not the scene)
 };
 
-// Adds --resolution, --fps, --msaa, --no-shadows, --background, --wireframe,
+// Adds --resolution, --fps, --msaa, --no-shadows, --no-ground, --background, --wireframe,
 // --color, --camera-distance, --azimuth, --fov, --camera-position,
 // --camera-target, --png-level, --gl to `command`, in a "Rendering" group.
 void add_render_options(CLI::App& command, RenderOptions& options);

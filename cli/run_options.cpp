@@ -49,8 +49,10 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
     camera.target = parse_point(o.render.camera_target, "--camera-target");
     camera.has_target = true;
   }
-  if (camera.has_position && camera.has_target && (camera.position - camera.target).norm() < 1e-9)
-    throw bad_input("--camera-position: must differ from the camera's target");
+  if ((given(o, "--camera-position") || given(o, "--camera-target")) && camera.has_position && camera.has_target &&
+      (camera.position - camera.target).norm() < 1e-9)
+    throw bad_input(std::string(given(o, "--camera-position") ? "--camera-position" : "--camera-target") +
+                    ": the camera's position and target must differ");
   if (given(o, "--azimuth")) {
     if (camera.mode == CameraMode::fixed && camera.has_position)
       throw bad_input("--azimuth: " + scene.label() + " places its camera at a position, which sets its direction");
@@ -59,6 +61,8 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
   if (given(o, "--fov")) camera.fov = o.render.fov;
   if (given(o, "--camera-distance")) {
     // A camera standing at a given position has no distance to change.
+    if (o.render.camera_distance > 0.0 && given(o, "--camera-position"))
+      throw bad_input("--camera-distance: not with --camera-position, which places the camera; give one of them");
     if (o.render.camera_distance > 0.0 && scene.camera.mode == CameraMode::fixed && scene.camera.has_position)
       throw bad_input("--camera-distance: " + scene.label() +
                       " places its camera at /render/camera/position; remove that to frame the scene from a distance");

@@ -49,7 +49,7 @@ const char* camera_mode_name(CameraMode mode);
 // "corotated" or "neohookean", as the scene file spells material models.
 const char* material_model_name(sim::MaterialModel model);
 
-// A camera with `has_position` false is fitted to the scene at frame 1, seen
+// A camera with `has_position` false is fitted to the scene (widening as the bodies move), seen
 // from `azimuth`/`elevation`; `distance` 0 means "fit".
 struct CameraDesc {
   CameraMode mode = CameraMode::fixed;

@@ -75,6 +75,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
     m_fit_box.extend(Eigen::Vector3d::Constant(-0.5));
     m_fit_box.extend(Eigen::Vector3d::Constant(0.5));
   }
+  m_first_center = m_fit_box.center();
 }
 
 void SceneView::track(const std::vector<sim::Aabb>& bounds) {
@@ -111,9 +112,10 @@ render::Camera SceneView::camera(int frame, int frame_count) const {
   switch (c.mode) {
     case CameraMode::fixed: {
       if (!c.has_position) return place(target, fit_radius, c.azimuth);
+      // A camera standing somewhere looks at the first frame's centre and stays.
       render::Camera cam;
+      cam.target = c.has_target ? c.target : m_first_center;
       cam.eye = c.position;
-      cam.target = target;
       cam.fov_y_degrees = c.fov;
       return cam;
     }

@@ -41,6 +41,7 @@ class SceneView {
   double m_follow_radius = 0.1;                   // m: fixed at frame 1 so the view does not breathe
   sim::Aabb m_fit_box;        // everything the bodies have covered, and their footprints on the ground
   bool m_have_ground = false;
+  Eigen::Vector3d m_first_center = Eigen::Vector3d::Zero();  // of the first frame's framing
 };
 
 }  // namespace recoil::cli

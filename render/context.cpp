@@ -38,13 +38,17 @@ GlContext::GlContext(GlBackend backend) : m_backend(backend) {
   } else if (backend == GlBackend::egl) {
     m_context = make_egl_context();
   } else {
-    // OSMesa stays the default where it exists; EGL where it does not (Mesa 25.1 dropped it).
+    // OSMesa stays the default; EGL when OSMesa cannot give a context.
     try {
       m_context = make_osmesa_context();
       m_backend = GlBackend::osmesa;
-    } catch (const Error&) {
-      m_context = make_egl_context();
-      m_backend = GlBackend::egl;
+    } catch (const Error& osmesa) {
+      try {
+        m_context = make_egl_context();
+        m_backend = GlBackend::egl;
+      } catch (const Error& egl) {
+        throw Error(ErrorKind::internal, std::string(osmesa.what()) + "; and " + egl.what());
+      }
     }
   }
   make_current();

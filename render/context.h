@@ -13,7 +13,7 @@
 namespace recoil::render {
 
 enum class GlBackend {
-  automatic,  // OSMesa where it works, else EGL
+  automatic,  // OSMesa, and EGL when OSMesa cannot give a context
   osmesa,
   egl,
 };

@@ -343,11 +343,7 @@ void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderSce
   glUniform2f(p.location("u_center"), static_cast<float>(g.center_x), static_cast<float>(g.center_z));
   glUniform2f(p.location("u_fade"), static_cast<float>(g.fade_start), static_cast<float>(g.fade_end));
   set(p, "u_spacing", static_cast<float>(g.grid_spacing));
-  if (settings.transparent_background) {
-    glUniform4f(p.location("u_background"), 0.0f, 0.0f, 0.0f, 0.0f);
-  } else {
-    glUniform4f(p.location("u_background"), frame.background[0], frame.background[1], frame.background[2], 1.0f);
-  }
+  glUniform4f(p.location("u_background"), frame.background[0], frame.background[1], frame.background[2], 1.0f);
   ground.draw(g);
 }
 
@@ -365,13 +361,9 @@ void Renderer::Impl::draw_shadow_catcher(const Frame& frame) {
   const GroundLayout& g = frame.ground;
   glUniform2f(p.location("u_center"), static_cast<float>(g.center_x), static_cast<float>(g.center_z));
   glUniform2f(p.location("u_fade"), static_cast<float>(g.fade_start), static_cast<float>(g.fade_end));
-  // Blended over the meshes' background, premultiplied; it writes no depth.
-  glEnable(GL_BLEND);
-  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  glDepthMask(GL_FALSE);
+  // Like the floor it stands for, it replaces what is behind it (the
+  // transparent clear colour, or a body's part below the ground) and writes depth.
   ground.draw(g);
-  glDepthMask(GL_TRUE);
-  glDisable(GL_BLEND);
 }
 
 void Renderer::Impl::draw_transparent(const RenderSettings& settings, const RenderScene& scene,

@@ -193,7 +193,7 @@ uniform float u_shadow_strength; // the share of the floor's light the key gives
 out vec4 o_color;
 
 // Only the darkening a floor would show under the key's shadow, as black of
-// that coverage, premultiplied: composited over anything, it lays the shadow.
+// that coverage (premultiplied) over the transparent clear colour.
 void main() {
   float r = length(v_world.xz - u_center);
   float fade = 1.0 - smoothstep(u_fade.x, u_fade.y, r);

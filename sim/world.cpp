@@ -290,12 +290,15 @@ std::vector<BodySurface> World::surfaces() const {
 
 std::vector<Aabb> World::body_bounds() const {
   std::vector<Aabb> out;
+  Points posed;
   for (const DeformableBody& body : m_bodies) {
+    Points nodes(body.num_nodes, 3);
+    for (int n = 0; n < body.num_nodes; ++n) nodes.row(n) = m_x.segment<3>(3 * (body.node_offset + n)).transpose();
+    embedded_positions(body.embedding, body.rest.tets, nodes, posed);
     Aabb box;
-    for (int n = 0; n < body.num_nodes; ++n) box.extend(m_x.segment<3>(3 * (body.node_offset + n)));
+    for (Eigen::Index v = 0; v < posed.rows(); ++v) box.extend(posed.row(v).transpose());
     out.push_back(box);
   }
-  Points posed;
   for (const RigidBody& body : m_rigid) {
     world_points(body.local, body.pose, posed);
     Aabb box;

@@ -129,8 +129,8 @@ class World {
 
   // Every mesh body (deformable, then rigid/kinematic/fixed), in description order; planes are not included.
   std::vector<BodySurface> surfaces() const;
-  // Bounds of each body in surfaces()' order, cheaply: a deformable body's
-  // nodes, a rigid body's collision surface (which holds what is drawn).
+  // Bounds of each body in surfaces()' order, from its collision surface:
+  // cheaper than the drawn one and holding it (offset outward when simplified).
   std::vector<Aabb> body_bounds() const;
   // Dynamic bodies (deformable, then rigid), in description order.
   std::vector<BodyStats> stats() const;

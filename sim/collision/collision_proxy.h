@@ -3,10 +3,9 @@
 // needs, a simplified copy (sim/geometry/mesh_simplify.h) pushed outward,
 // each part by its own measured deviation, so that the original (the render surface) stays
 // inside what contact sees and never visibly sinks into the ground or into
-// another body. A deformable body's surface also has no edge longer than a
-// lattice cell's face diagonal (sim/geometry/mesh_refine.h): contact on a
-// coarse mesh's corners alone leaves the cells between them to sag through
-// the ground.
+// another body. A deformable body's surface also has no edge longer than its
+// tets' longest (sim/geometry/mesh_refine.h): contact on a coarse mesh's
+// corners alone leaves the cells between them to sag through the ground.
 // A mesh within both bounds is its own collision surface.
 #include "sim/geometry/tri_mesh.h"
 

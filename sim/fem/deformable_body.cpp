@@ -73,11 +73,12 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
   // The lattice cell from the tets themselves (they may come from a file):
   // a cube of edge c splits into six tets of c^3 / 6.
   const double cell = std::cbrt(6.0 * total_volume(body.rest) / body.rest.num_tets());
-  // By default no surface edge is longer than a lattice cell's face
-  // diagonal: every cell face the body may rest on has contact points at its
-  // corners. A budget the scene gives is kept as given.
+  // By default no surface edge is longer than the longest edge of the body's
+  // tets (a lattice cell's diagonal, however the body is scaled): every cell
+  // the body may rest on has contact points at its corners. A budget the
+  // scene gives is kept as given.
   const bool default_budget = !desc.collision.keep_mesh && desc.collision.max_triangles == 0 && desc.collision.edge_length == 0.0;
-  const double longest = default_budget ? std::sqrt(2.0) * cell : 0.0;
+  const double longest = default_budget ? std::max(longest_tet_edge(body.rest), 2.0 * margin) : 0.0;
   const CollisionProxy proxy =
       make_collision_proxy(device, body.surface, collision_budget(desc.collision, body.surface, cell, margin), longest);
   if (proxy.separate) {

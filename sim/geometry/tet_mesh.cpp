@@ -1,5 +1,7 @@
 #include "sim/geometry/tet_mesh.h"
 
+#include <algorithm>
+
 #include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <cmath>
@@ -21,6 +23,15 @@ double total_volume(const TetMesh& mesh) {
   double v = 0.0;
   for (int t = 0; t < mesh.num_tets(); ++t) v += tet_volume(mesh, t);
   return v;
+}
+
+double longest_tet_edge(const TetMesh& mesh) {
+  double longest = 0.0;
+  for (int t = 0; t < mesh.num_tets(); ++t)
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b)
+        longest = std::max(longest, (mesh.nodes.row(mesh.tets(t, a)) - mesh.nodes.row(mesh.tets(t, b))).norm());
+  return longest;
 }
 
 int orient_positive(TetMesh& mesh, int* degenerate, double eps_rel) {

@@ -26,6 +26,9 @@ inline double tet_volume(const TetMesh& mesh, int t) { return tet_volume(mesh.no
 // Sum of signed tet volumes, m^3.
 double total_volume(const TetMesh& mesh);
 
+// The longest edge of any tet, m (0 without tets).
+double longest_tet_edge(const TetMesh& mesh);
+
 // Swaps two indices of every negatively oriented tet. Returns how many were
 // flipped. Degenerate tets (|volume| <= eps_rel * bbox_diag^3) are left alone
 // and counted in `degenerate` when given.
