@@ -12,22 +12,6 @@ thread_local GlContext* t_current = nullptr;
 
 }  // namespace
 
-std::optional<GlBackend> parse_gl_backend(const std::string& name) {
-  if (name == "auto") return GlBackend::automatic;
-  if (name == "osmesa") return GlBackend::osmesa;
-  if (name == "egl") return GlBackend::egl;
-  return std::nullopt;
-}
-
-const char* gl_backend_name(GlBackend backend) {
-  switch (backend) {
-    case GlBackend::automatic: return "auto";
-    case GlBackend::osmesa: return "osmesa";
-    case GlBackend::egl: return "egl";
-  }
-  return "auto";
-}
-
 GlContext::GlContext(GlBackend backend) : m_backend(backend) {
   if (t_current) {  // the other backend's context must let go of the thread first
     t_current->m_context->release();

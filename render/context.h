@@ -7,20 +7,11 @@
 // This and the two backend files are the only places that touch osmesa.h or
 // EGL; the GL entry points render/ calls dispatch to whichever context is current.
 #include <memory>
-#include <optional>
 #include <string>
 
+#include "render/gl_backend.h"
+
 namespace recoil::render {
-
-enum class GlBackend {
-  automatic,  // OSMesa, and EGL when OSMesa cannot give a context
-  osmesa,
-  egl,
-};
-
-// "auto", "osmesa" or "egl" as the command line spells them; nullopt for anything else.
-std::optional<GlBackend> parse_gl_backend(const std::string& name);
-const char* gl_backend_name(GlBackend backend);
 
 // One backend's context, made current or released on the calling thread.
 class BackendContext {

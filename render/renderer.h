@@ -9,7 +9,7 @@
 #include <memory>
 
 #include "render/camera.h"
-#include "render/context.h"
+#include "render/gl_backend.h"
 #include "render/image.h"
 #include "render/render_scene.h"
 

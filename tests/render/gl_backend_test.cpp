@@ -8,16 +8,6 @@
 namespace recoil::render {
 namespace {
 
-RenderScene studio_scene() {
-  RenderScene scene;
-  scene.meshes.push_back(test::make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.85f, 0.63f, 0.40f}));
-  scene.meshes.push_back(test::make_icosphere({1.1f, 0.4f, 0.4f}, 0.4f, 2, {0.30f, 0.50f, 0.85f}));
-  RenderMesh torus = test::make_torus({-1.0f, 0.15f, 0.6f}, 0.4f, 0.15f, 32, 12, {0.8f, 0.2f, 0.2f});
-  torus.opacity = 0.5f;
-  scene.meshes.push_back(torus);
-  return scene;
-}
-
 RenderSettings settings_for(GlBackend backend) {
   RenderSettings settings;
   settings.width = 160;
@@ -37,8 +27,8 @@ TEST(GlBackend, OsmesaAndEglDrawIdenticalFrames) {
   std::cout << "osmesa: " << osmesa.gl_renderer() << "; egl: " << egl.gl_renderer() << "\n";
   // Interleaved, so each frame switches the thread from one backend to the other.
   for (int frame = 0; frame < 2; ++frame) {
-    const Image a = osmesa.render(studio_scene(), camera);
-    const Image b = egl.render(studio_scene(), camera);
+    const Image a = osmesa.render(test::studio_scene(), camera);
+    const Image b = egl.render(test::studio_scene(), camera);
     ASSERT_EQ(a.rgba.size(), b.rgba.size());
     EXPECT_TRUE(a.rgba == b.rgba) << "frame " << frame;
   }

@@ -39,17 +39,6 @@ RenderSettings small(int msaa, bool shadows = false) {
   return settings;
 }
 
-// Box, sphere and a transparent torus on the grid floor: every feature at once.
-RenderScene studio_scene() {
-  RenderScene scene;
-  scene.meshes.push_back(test::make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.85f, 0.63f, 0.40f}));
-  scene.meshes.push_back(test::make_icosphere({1.1f, 0.4f, 0.4f}, 0.4f, 2, {0.30f, 0.50f, 0.85f}));
-  RenderMesh torus = test::make_torus({-1.0f, 0.15f, 0.6f}, 0.4f, 0.15f, 32, 12, {0.8f, 0.2f, 0.2f});
-  torus.opacity = 0.5f;
-  scene.meshes.push_back(torus);
-  return scene;
-}
-
 Camera studio_camera(const RenderSettings& s) {
   return frame_bounding_sphere({0.0, 0.5, 0.0}, 1.6, 30.0, 20.0, 40.0, double(s.width) / s.height);
 }
@@ -105,7 +94,7 @@ TEST(Renderer, ImageIsTopRowFirst) {
 
 TEST(Renderer, SameInputGivesIdenticalBytes) {
   const RenderSettings settings = small(4, true);
-  const RenderScene scene = studio_scene();
+  const RenderScene scene = test::studio_scene();
   Renderer renderer(settings);
   const Image first = renderer.render(scene, studio_camera(settings));
   const Image second = renderer.render(scene, studio_camera(settings));
@@ -119,7 +108,7 @@ TEST(Renderer, TransparentBackgroundHasZeroAlphaWhereNothingIsDrawn) {
   RenderSettings settings = small(4, true);
   settings.transparent_background = true;
   Renderer renderer(settings);
-  const Image image = renderer.render(studio_scene(), studio_camera(settings));
+  const Image image = renderer.render(test::studio_scene(), studio_camera(settings));
   EXPECT_EQ(at(image, 0, 0)[3], 0);    // sky above the faded floor
   EXPECT_EQ(at(image, 95, 0)[3], 0);
   EXPECT_EQ(at(image, 48, 32)[3], 255);  // the box

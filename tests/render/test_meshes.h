@@ -117,4 +117,15 @@ inline RenderMesh make_torus(std::array<float, 3> center, float major, float min
   return mesh;
 }
 
+// Box, sphere and a transparent torus on the grid floor: every feature at once.
+inline RenderScene studio_scene() {
+  RenderScene scene;
+  scene.meshes.push_back(make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.85f, 0.63f, 0.40f}));
+  scene.meshes.push_back(make_icosphere({1.1f, 0.4f, 0.4f}, 0.4f, 2, {0.30f, 0.50f, 0.85f}));
+  RenderMesh torus = make_torus({-1.0f, 0.15f, 0.6f}, 0.4f, 0.15f, 32, 12, {0.8f, 0.2f, 0.2f});
+  torus.opacity = 0.5f;
+  scene.meshes.push_back(torus);
+  return scene;
+}
+
 }  // namespace recoil::render::test
