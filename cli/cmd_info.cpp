@@ -40,6 +40,9 @@ nlohmann::json look_json(const sim::TriMesh& mesh) {
     const sim::LookMaterial& material = look.materials[m];
     nlohmann::json entry = {{"name", material.name}};
     entry["color"] = material.has_color ? nlohmann::json(material.color) : nlohmann::json(nullptr);
+    entry["surface"] = material.has_surface
+                           ? nlohmann::json{{"metallic", material.metallic}, {"roughness", material.roughness}}
+                           : nlohmann::json(nullptr);
     entry["texture"] = material.texture ? nlohmann::json{{"width", material.texture->width}, {"height", material.texture->height}}
                                         : nlohmann::json(nullptr);
     materials.push_back(entry);

@@ -18,6 +18,9 @@ std::shared_ptr<const render::RenderLook> to_render_look(const sim::SurfaceLook&
   for (const sim::LookMaterial& m : look.materials) {
     render::RenderMaterial material;
     if (m.has_uvs && !look.corner_uv.empty()) material.texture = m.texture;  // the image itself: no copy
+    material.has_surface = m.has_surface;
+    material.metallic = m.metallic;
+    material.roughness = m.roughness;
     out->materials.push_back(material);
     const bool tinted = material.texture || m.vertex_colored;
     base.push_back(m.has_color ? m.color : tinted ? std::array<float, 3>{1.0f, 1.0f, 1.0f} : plain);

@@ -117,6 +117,7 @@ void MeshBuffers::set_look(const RenderMesh& mesh) {
       Group group;
       group.first = m_drawn.indices.size();
       if (!look.corner_uvs.empty()) group.texture = look.materials[material].texture;
+      group.shading = surface_shading(look.materials[material]);
       m_groups.push_back(group);
     }
     m_groups.back().count += 3;

@@ -15,6 +15,7 @@
 #include "render/crease_split.h"
 #include "render/gl_objects.h"
 #include "render/render_scene.h"
+#include "render/surface_shading.h"
 
 namespace recoil::render {
 
@@ -35,6 +36,7 @@ class MeshBuffers {
   struct Group {
     std::size_t first = 0, count = 0;
     std::shared_ptr<const Image> texture;  // null: none
+    SurfaceShading shading;
   };
   // Empty without a look: then draw() in one colour.
   const std::vector<Group>& groups() const { return m_groups; }

@@ -15,6 +15,10 @@ using Rgb = std::array<float, 3>;
 
 struct RenderMaterial {
   std::shared_ptr<const Image> texture;  // base-colour map (sRGB); null: none
+  // glTF's metallic-roughness factors (surface_shading.h); absent: the studio's highlight.
+  bool has_surface = false;
+  float metallic = 0.0f;   // 0 dielectric .. 1 metal
+  float roughness = 1.0f;  // perceptual, 0 mirror .. 1 matte
 };
 
 // How a mesh is drawn when it is more than one colour, per triangle corner.

@@ -91,6 +91,11 @@ void set(ShaderProgram& p, const char* name, const Eigen::Matrix4f& m) {
 }
 void set(ShaderProgram& p, const char* name, float v) { glUniform1f(p.location(name), v); }
 void set(ShaderProgram& p, const char* name, int v) { glUniform1i(p.location(name), v); }
+void set_shading(ShaderProgram& p, const SurfaceShading& shading) {
+  set(p, "u_metallic", shading.metallic);
+  set(p, "u_shininess", shading.shininess);
+  set(p, "u_highlight", shading.highlight);
+}
 
 std::string hex(unsigned value) {
   char text[16];
@@ -293,6 +298,7 @@ void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh&
     programs.plain->use();
     set(*programs.plain, "u_albedo", Eigen::Vector3f(albedo[0], albedo[1], albedo[2]));
     set(*programs.plain, "u_opacity", opacity);
+    set_shading(*programs.plain, SurfaceShading{});
     buffers.draw();
   } else {
     // The look's vertex colours are the whole albedo.
@@ -301,6 +307,7 @@ void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh&
       program.use();
       set(program, "u_albedo", Eigen::Vector3f(1.0f, 1.0f, 1.0f));
       set(program, "u_opacity", opacity);
+      set_shading(program, group.shading);
       if (group.texture) {
         glActiveTexture(kMaterialUnit);
         textures.bind(group.texture);

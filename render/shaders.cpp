@@ -36,17 +36,10 @@ uniform vec3 u_fill_color;
 uniform vec3 u_rim_color;
 uniform vec3 u_sky_ambient;
 uniform vec3 u_ground_ambient;
+uniform float u_metallic;   // the material's (render/surface_shading.h)
+uniform float u_shininess;
+uniform float u_highlight;
 const float kSpecular = 0.25;
-
-// x^48 by repeated squaring: llvmpipe's pow() is an exp2/log2 pair of
-// polynomials, several times dearer than these multiplies.
-float pow48(float x) {
-  float x2 = x * x;
-  float x4 = x2 * x2;
-  float x8 = x4 * x4;
-  float x16 = x8 * x8;
-  return x16 * x16 * x16;
-}
 
 // Radiance leaving a surface (linear) lit by the rig; n unit, facing the viewer.
 vec3 studio_light(vec3 albedo, vec3 n, vec3 world, float visibility) {
@@ -54,10 +47,13 @@ vec3 studio_light(vec3 albedo, vec3 n, vec3 world, float visibility) {
   float fill = max(dot(n, u_fill_dir), 0.0);
   float rim = max(dot(n, u_rim_dir), 0.0);
   vec3 ambient = mix(u_ground_ambient, u_sky_ambient, 0.5 + 0.5 * n.y);
-  vec3 color = albedo * (u_key_color * key + u_fill_color * fill + u_rim_color * rim + ambient);
-  vec3 h = normalize(u_key_dir + normalize(u_eye - world));
-  float highlight = pow48(max(dot(n, h), 0.0)) * float(key > 0.0);
-  return color + (kSpecular * highlight * visibility) * u_key_color;
+  vec3 color = (albedo * (1.0 - u_metallic)) * (u_key_color * key + u_fill_color * fill + u_rim_color * rim + ambient);
+  vec3 v = normalize(u_eye - world);
+  vec3 mirrored = reflect(-v, n);
+  color += (u_metallic * albedo) * mix(u_ground_ambient, u_sky_ambient, 0.5 + 0.5 * mirrored.y);
+  vec3 h = normalize(u_key_dir + v);
+  float highlight = pow(max(dot(n, h), 0.0), u_shininess) * u_highlight * float(key > 0.0);
+  return color + (mix(vec3(kSpecular), albedo, u_metallic) * highlight * visibility) * u_key_color;
 }
 )";
 

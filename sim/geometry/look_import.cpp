@@ -22,6 +22,9 @@ namespace {
 // pixels): a preview needs no bigger texture.
 constexpr int kLargestTextureSide = 8192;
 
+// A factor read from the file clamped to [0, 1]; `fallback` when it is not a number.
+float unit_interval(float x, float fallback) { return std::isfinite(x) ? std::clamp(x, 0.0f, 1.0f) : fallback; }
+
 bool fits(long long width, long long height) {
   return width > 0 && height > 0 && width <= kLargestTextureSide && height <= kLargestTextureSide;
 }
@@ -153,8 +156,14 @@ std::vector<LookMaterial> read_materials(const aiScene& scene, const fs::path& m
       if (material->Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
           material->Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {
         m.has_color = true;
-        auto channel = [](float c) { return std::isfinite(c) ? std::clamp(c, 0.0f, 1.0f) : 1.0f; };
-        m.color = {channel(color.r), channel(color.g), channel(color.b)};
+        m.color = {unit_interval(color.r, 1.0f), unit_interval(color.g, 1.0f), unit_interval(color.b, 1.0f)};
+      }
+      float metallic = 0.0f, roughness = 1.0f;
+      const bool has_metallic = material->Get(AI_MATKEY_METALLIC_FACTOR, metallic) == AI_SUCCESS;
+      if (material->Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness) == AI_SUCCESS) {
+        m.has_surface = true;
+        m.metallic = has_metallic ? unit_interval(metallic, 0.0f) : 0.0f;
+        m.roughness = unit_interval(roughness, 1.0f);
       }
     }
     for (aiTextureType type : {aiTextureType_BASE_COLOR, aiTextureType_DIFFUSE}) {

@@ -9,7 +9,7 @@ namespace recoil::sim {
 
 bool SurfaceLook::draws_anything() const {
   return !corner_color.empty() ||
-         std::any_of(materials.begin(), materials.end(), [](const LookMaterial& m) { return m.has_color || m.texture; });
+         std::any_of(materials.begin(), materials.end(), [](const LookMaterial& m) { return m.has_color || m.texture || m.has_surface; });
 }
 
 SurfaceLook select_triangles(const SurfaceLook& look, const std::vector<int>& kept) {
@@ -48,8 +48,9 @@ void encode_look(const SurfaceLook& look, std::string& bytes) {
   put_value(bytes, static_cast<std::int64_t>(look.materials.size()));
   for (const LookMaterial& m : look.materials) {
     put_string(bytes, m.name);
-    put_value(bytes, std::array<std::uint8_t, 3>{m.has_color, m.has_uvs, m.vertex_colored});
+    put_value(bytes, std::array<std::uint8_t, 4>{m.has_color, m.has_uvs, m.vertex_colored, m.has_surface});
     put_value(bytes, m.color);
+    put_value(bytes, std::array<float, 2>{m.metallic, m.roughness});
   }
   put_array(bytes, look.triangle_material);
   put_array(bytes, look.corner_uv);
@@ -64,11 +65,15 @@ SurfaceLook decode_look(const std::string& bytes, size_t& offset) {
   look.materials.resize(in.count(1));
   for (LookMaterial& m : look.materials) {
     m.name = in.string();
-    const auto flags = in.value<std::array<std::uint8_t, 3>>();
+    const auto flags = in.value<std::array<std::uint8_t, 4>>();
     m.has_color = flags[0] != 0;
     m.has_uvs = flags[1] != 0;
     m.vertex_colored = flags[2] != 0;
+    m.has_surface = flags[3] != 0;
     m.color = in.value<std::array<float, 3>>();
+    const auto surface = in.value<std::array<float, 2>>();
+    m.metallic = surface[0];
+    m.roughness = surface[1];
   }
   look.triangle_material = in.array<std::int32_t>();
   look.corner_uv = in.array<float>();

@@ -22,6 +22,11 @@ struct LookMaterial {
   std::shared_ptr<const RgbaImage> texture;  // base-colour map (sRGB), sampled with the corner UVs; null: none
   bool has_uvs = false;         // its triangles carry texture coordinates
   bool vertex_colored = false;  // its triangles carry vertex colours
+  // glTF's metallic-roughness factors (assimp also reports a roughness for
+  // some FBX materials); absent: the renderer's own highlight.
+  bool has_surface = false;
+  float metallic = 0.0f;   // 0 dielectric .. 1 metal
+  float roughness = 1.0f;  // perceptual roughness, 0 mirror .. 1 matte
 };
 
 struct SurfaceLook {

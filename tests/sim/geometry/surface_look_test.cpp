@@ -77,6 +77,25 @@ TEST(SurfaceLook, EveryMaterialOfAMultiMaterialGlbKeepsItsColour) {
   EXPECT_GE(colours.size(), 3u);
 }
 
+TEST(SurfaceLook, GltfMetallicRoughnessFactorsAreRead) {
+  // ClearCoatTest's materials: dielectrics of roughness 0.44, 0.03, 0.6, 0.9 and 1.
+  const TriMesh spheres = import_surface(kModels / "glTF2/ClearCoat-glTF/ClearCoatTest.gltf");
+  ASSERT_TRUE(spheres.look);
+  std::set<float> roughness;
+  for (int m : std::set<int>(spheres.look->triangle_material.begin(), spheres.look->triangle_material.end())) {
+    const LookMaterial& material = spheres.look->materials[static_cast<size_t>(m)];
+    EXPECT_TRUE(material.has_surface) << material.name;
+    EXPECT_EQ(material.metallic, 0.0f) << material.name;
+    roughness.insert(material.roughness);
+  }
+  EXPECT_TRUE(roughness.count(0.03f)) << "the glossiest coat";
+  EXPECT_TRUE(roughness.count(0.44f));
+  // A format without the factors leaves them to the renderer.
+  const TriMesh duck = import_surface(kModels / "Collada/duck.dae");
+  ASSERT_TRUE(duck.look);
+  for (const LookMaterial& m : duck.look->materials) EXPECT_FALSE(m.has_surface) << m.name;
+}
+
 TEST(SurfaceLook, PlyVertexColoursArePerCorner) {
   const TriMesh triangle = import_surface(kModels / "PLY/float-color.ply");
   ASSERT_TRUE(triangle.look);
@@ -137,6 +156,9 @@ TEST(SurfaceLook, BytesRoundTripWithoutTextures) {
   m.has_color = true;
   m.has_uvs = true;
   m.color = {0.25f, 0.5f, 0.75f};
+  m.has_surface = true;
+  m.metallic = 0.75f;
+  m.roughness = 0.125f;
   m.texture = std::make_shared<RgbaImage>(2, 1);  // decoded apart, in a child of its own
   look.materials = {m, LookMaterial{}};
   look.triangle_material = {1, 0};
@@ -156,6 +178,10 @@ TEST(SurfaceLook, BytesRoundTripWithoutTextures) {
   EXPECT_TRUE(back.materials[0].has_uvs);
   EXPECT_FALSE(back.materials[0].vertex_colored);
   EXPECT_FALSE(back.materials[0].texture);
+  EXPECT_TRUE(back.materials[0].has_surface);
+  EXPECT_EQ(back.materials[0].metallic, 0.75f);
+  EXPECT_EQ(back.materials[0].roughness, 0.125f);
+  EXPECT_FALSE(back.materials[1].has_surface);
 }
 
 TEST(SurfaceLook, TextFromFilesIsPrintable) {
