@@ -14,7 +14,7 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
       ->group(group)->capture_default_str();
   command.add_option("--fps", options.fps, "Frames per second of the output")
       ->check(CLI::Range(kFpsRange.lo, kFpsRange.hi))->group(group)->capture_default_str();
-  command.add_option("--msaa", options.msaa, "Anti-aliasing samples per pixel: 0, 2 or 4")
+  command.add_option("--msaa", options.msaa, "Anti-aliasing samples per pixel: 0, 2 or 4 (2 only where the OpenGL driver has it; llvmpipe has 4 only)")
       ->check(CLI::IsMember({0, 2, 4}))->group(group)->capture_default_str();
   command.add_flag("--no-shadows", options.no_shadows, "Skip the key light's shadow (faster)")->group(group);
   command.add_flag("--no-ground", options.no_ground,

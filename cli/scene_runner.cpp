@@ -138,7 +138,9 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       report.set_gl(render::gl_backend_name(renderer->backend()), renderer->gl_renderer());
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::bad_input) throw;
-      throw Error(e.kind(), scene.label() + ": /render/resolution: " + e.what());
+      // The renderer refuses a resolution or an msaa count its driver cannot draw; its message says which.
+      const bool msaa = std::string(e.what()).rfind("render msaa", 0) == 0;
+      throw Error(e.kind(), scene.label() + (msaa ? ": /render/msaa: " : ": /render/resolution: ") + e.what());
     }
     const render::FrameWriterSize size = render::default_frame_writer_size();
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), size.threads, size.capacity);

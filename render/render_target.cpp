@@ -59,6 +59,17 @@ RenderTarget::RenderTarget(int width, int height, int msaa)
   glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_draw_depth.get());
   check_complete("multisampled colour and depth", width, height, msaa);
   if (msaa > 0) {
+    glBindRenderbuffer(GL_RENDERBUFFER, m_draw_color.get());
+    // A driver may round the count up (llvmpipe offers 4 only): the image
+    // would then be --msaa 4's, so the request is refused, not changed.
+    GLint samples = 0;
+    glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
+    if (samples != msaa) {
+      const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
+      throw bad_input("render msaa " + std::to_string(msaa) + ": this OpenGL driver (" +
+                      std::string(renderer ? renderer : "unknown") + ") draws " + std::to_string(samples) +
+                      " samples when asked for " + std::to_string(msaa) + "; use msaa 0 or " + std::to_string(samples));
+    }
     m_resolve_color = gl::Renderbuffer::create();
     m_resolve = gl::Framebuffer::create();
     storage(m_resolve_color.get(), 0, GL_SRGB8_ALPHA8, width, height);
