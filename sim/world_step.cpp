@@ -162,7 +162,7 @@ std::vector<ContactPlane> World::contact_planes() const {
 
 std::optional<InitialOverlap> World::initial_overlap() const {
   const ContactModel model(contact_surfaces(), contact_planes(), DofState{&m_x, &m_v, m_dt}, m_contact.margin,
-                           m_detector.get());
+                           m_detector.get(), m_contact.solver.policy);
   std::vector<CollisionSurface> surfaces = model.collision_surfaces(Eigen::VectorXd::Zero(m_v.size()));
   for (CollisionSurface& s : surfaces) s.x1 = s.x0;  // where they are, not where they move
   const std::vector<CollisionPlane> planes = model.collision_planes();
@@ -192,7 +192,7 @@ void World::collide_and_solve(StepReport& report) {
   if (m_x.size() == 0) return;
   auto t = Clock::now();
   ContactModel model(contact_surfaces(), contact_planes(), DofState{&m_x, &m_v, m_dt}, m_contact.margin,
-                     m_detector.get());
+                     m_detector.get(), m_contact.solver.policy);
   const std::vector<CollisionSurface> surfaces = model.collision_surfaces(m_dv);
   const std::vector<ContactCandidate> candidates = m_detector->detect(surfaces, model.collision_planes());
   report.profile.collide = ms_since(t);

@@ -42,9 +42,9 @@ ContactState ContactMemory::recall(const CandidateKey& key, const Eigen::Vector3
 }
 
 ContactModel::ContactModel(std::vector<ContactSurface> surfaces, std::vector<ContactPlane> planes, DofState state,
-                           double margin, CollisionDetector* detector)
+                           double margin, CollisionDetector* detector, const ContactPolicy& policy)
     : m_surfaces(std::move(surfaces)), m_planes(std::move(planes)), m_state(state), m_margin(margin),
-      m_detector(detector) {
+      m_rest_gap(policy.rest_gap_fraction * margin), m_detector(detector) {
   RECOIL_CHECK(state.x && state.v && state.h > 0.0);
   m_start.resize(m_surfaces.size());
   for (size_t s = 0; s < m_surfaces.size(); ++s) start_positions(m_surfaces[s], m_state, m_start[s]);
@@ -171,7 +171,7 @@ void ContactModel::linearize(Contact& c, const Configuration& conf, ContactRows&
 ContactModel::Contact ContactModel::make_contact(const ContactCandidate& candidate) const {
   const Eigen::Vector3d n = candidate.normal.normalized();
   Contact c{candidate, n, n, Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), 0.0};
-  c.rest_gap = std::clamp(candidate.gap, 0.0, kRestGapFraction * m_margin);
+  c.rest_gap = std::clamp(candidate.gap, 0.0, m_rest_gap);
   return c;
 }
 

@@ -11,7 +11,7 @@
 //   J_n h = d g / d dv, J_t h = d (t.d) / d dv  (n, t held)
 //   rhs_normal    = J_n dv - (g* - g_rest)/h   so J_n dv' >= rhs  <=>  g(dv') >= g_rest to first order
 //   rhs_tangent   = J_t dv - t.d*/h            so sticking means no relative tangential motion
-// Resting distance g_rest = clamp(g0, 0, kRestGapFraction * margin), with g0
+// Resting distance g_rest = clamp(g0, 0, rest_gap_fraction * margin) (ContactPolicy), with g0
 // the candidate's gap at the start of the step: contacts that approach stop a
 // tenth of the margin apart instead of exactly touching. At zero distance the
 // next step cannot tell a vertex resting on a corner from one beside it (the
@@ -59,13 +59,11 @@ class ContactMemory {
 
 class ContactModel final : public ContactLinearization {
  public:
-  static constexpr double kRestGapFraction = 0.1;
-
   // surfaces: one per collision surface, in the detector's order; planes in
   // the candidates' plane order. `detector` (may be null) re-runs the search
-  // for add_new_contacts; `margin` in m.
+  // for add_new_contacts; `margin` in m; `policy` gives the rest gap.
   ContactModel(std::vector<ContactSurface> surfaces, std::vector<ContactPlane> planes, DofState state, double margin,
-               CollisionDetector* detector);
+               CollisionDetector* detector, const ContactPolicy& policy = {});
 
   // The detector's input for the step x0 -> predicted(dv).
   std::vector<CollisionSurface> collision_surfaces(const Eigen::VectorXd& dv) const;
@@ -120,6 +118,7 @@ class ContactModel final : public ContactLinearization {
   std::vector<ContactPlane> m_planes;
   DofState m_state;
   double m_margin;
+  double m_rest_gap;  // the largest resting distance, m
   CollisionDetector* m_detector;
   std::vector<Points> m_start;  // per surface: positions at the start of the step
   std::vector<Contact> m_contacts;

@@ -29,6 +29,7 @@
 
 #include "sim/fem/block_sparse.h"
 #include "sim/fem/momentum_preconditioner.h"
+#include "sim/solver/contact_policy.h"
 
 namespace recoil::sim {
 
@@ -118,6 +119,7 @@ struct ContactSolverSettings {
   double constraint_tolerance = 1e-6;  // epsilon_2, m/s: smallest accepted change of a contact, and
                                        // the bound on each constraint row's residual at convergence
   int max_relinearizations = 16;       // relinearize calls per solve
+  ContactPolicy policy;                // what cr's evaluations add to Algorithms 2 and 3
   // the preconditioner of `cr` (cr_plain is always C = I).
   CrPreconditioner preconditioner = CrPreconditioner::block_jacobi;
 };

@@ -124,7 +124,7 @@ void CrSolver::start_from_warm_states() {
       // lambda' restarts from this step's lambda at the first converged
       // evaluation: last step's value is a start for the iterate, not a
       // sample (averaging it in cost several extra solves per warm step).
-      reset_lambda_window(m_tracks[static_cast<size_t>(k)], s.lambda_kinetic);
+      reset_lambda_window(m_tracks[static_cast<size_t>(k)], s.lambda_kinetic, m_settings.policy.alpha_theta);
       m_tracks[static_cast<size_t>(k)].samples = 0;
     }
     if (s.mode != ContactMode::inactive) m_y[m_n + 3 * k] = s.lambda;
@@ -417,7 +417,7 @@ bool CrSolver::step() {
     const double decades = res > m_settings.tolerance ? std::log10(res / m_settings.tolerance) : 0.0;
     const int interval = std::max(1, static_cast<int>(std::floor(decades * decades / 2.0)));
     if (m_since_restart % interval == 0 &&
-        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), m_settings.constraint_tolerance, m_settings.max_flips, false)
+        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), m_settings, false)
                 .total() > 0) {
       restart_after_change(KrylovStart::contact_switch);
       return false;
@@ -460,7 +460,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   const bool meets_laws = m_best.offer(m_y) <= eps2;
   if (!meets_laws) {
     const EvaluationChanges changes =
-        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), eps2, m_settings.max_flips, true);
+        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), m_settings, true);
     if (changes.total() > 0) {
       restart_after_change(changes.mode_changes > 0 ? KrylovStart::mode_change : KrylovStart::friction_update);
       return Finish::go_on;

@@ -39,8 +39,12 @@ struct PointWithThreeContacts {
     y = Eigen::VectorXd::Zero(3 + 3 * 3);
   }
   bool active(int k) const { return owned.problem.states[static_cast<size_t>(k)].mode != ContactMode::inactive; }
-  int evaluate(bool converged) {
-    return evaluate_constraints(owned.problem, tracks, y, *P, kEps2, kMaxFlips, converged).total();
+  int evaluate(bool converged, const ContactPolicy& policy = {}) {
+    ContactSolverSettings settings;
+    settings.constraint_tolerance = kEps2;
+    settings.max_flips = kMaxFlips;
+    settings.policy = policy;
+    return evaluate_constraints(owned.problem, tracks, y, *P, settings, converged).total();
   }
 };
 
@@ -56,6 +60,20 @@ TEST(ActivationOrder, OfTwoNearlyParallelRowsOnlyTheDeeperComesOn) {
   // ... and comes on at a solved evaluation if it still penetrates.
   EXPECT_EQ(p.evaluate(true), 1);
   EXPECT_TRUE(p.active(1));
+}
+
+TEST(ActivationOrder, ThePolicySetsTheParallelAndShareThresholds) {
+  // The same rows with the parallel cosine raised past 0.9988: all three on.
+  ContactPolicy loose;
+  loose.parallel = 0.9995;
+  PointWithThreeContacts p(Eigen::Vector3d(0.0, 0.05, 1.0));
+  EXPECT_EQ(p.evaluate(true, loose), 3);
+  // A share of 0.99 of the deepest (0.020 m/s) admits only the first row.
+  ContactPolicy strict;
+  strict.change_share = 0.99;
+  PointWithThreeContacts q(Eigen::Vector3d(0.0, 1.0, 1.0));
+  EXPECT_EQ(q.evaluate(true, strict), 1);
+  EXPECT_TRUE(q.active(0));
 }
 
 TEST(ActivationOrder, RowsAtAnAngleComeOnTogether) {
