@@ -194,9 +194,16 @@ void ContactModel::build(const std::vector<ContactCandidate>& candidates, const 
 
 int ContactModel::add_new_contacts(const Eigen::VectorXd& dv, ContactProblem& problem) {
   if (!m_detector) return 0;
-  const auto start = std::chrono::steady_clock::now();
-  const std::vector<ContactCandidate> found = m_detector->detect(collision_surfaces(dv), collision_planes());
-  m_collide_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  // The solver often asks again at the very dv it asked last (a
+  // re-linearisation that moved nothing solves to the same dv): the search
+  // is a function of the positions alone, so its answer is kept.
+  if (m_searched_dv.size() != dv.size() || m_searched_dv != dv) {
+    const auto start = std::chrono::steady_clock::now();
+    m_searched = m_detector->detect(collision_surfaces(dv), collision_planes());
+    m_searched_dv = dv;
+    m_collide_ms += std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  }
+  const std::vector<ContactCandidate>& found = m_searched;
   // A contact already in the problem may be found again through another
   // triangle of the same vertex: that is not a new contact (candidate_reduction.h).
   std::vector<ContactCandidate> known;

@@ -123,6 +123,8 @@ class ContactModel final : public ContactLinearization {
   std::vector<Points> m_start;  // per surface: positions at the start of the step
   std::vector<Contact> m_contacts;
   double m_collide_ms = 0.0;
+  Eigen::VectorXd m_searched_dv;               // the dv of the last search in add_new_contacts
+  std::vector<ContactCandidate> m_searched;    // what it found
 };
 
 }  // namespace recoil::sim
