@@ -1,5 +1,6 @@
 #include "cli/scene_info.h"
 
+#include <algorithm>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -79,9 +80,17 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
        << "  frames       " << scene.frame_count() << " at " << scene.render.fps << " fps, " << scene.render.resolution
        << "\n"
        << "  bodies       " << scene.bodies.size() << "\n";
+  // The name column fits the longest name up to kWidestName; a longer one
+  // keeps its whole line and the type starts on the next.
+  constexpr size_t kWidestName = 32;
+  size_t name_width = 15;
+  for (const nlohmann::json& row : bodies)
+    name_width = std::max(name_width, std::min(kWidestName, row["name"].get<std::string>().size()));
   for (const nlohmann::json& row : bodies) {
-    text << "    " << std::left << std::setw(16) << row["name"].get<std::string>() << std::setw(11)
-         << row["type"].get<std::string>();
+    const std::string name = row["name"].get<std::string>();
+    text << "    " << std::left << std::setw(static_cast<int>(name_width + 1)) << name;
+    if (name.size() > name_width) text << "\n    " << std::string(name_width + 1, ' ');
+    text << std::setw(11) << row["type"].get<std::string>();
     if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
     if (row.contains("collision_triangles") && row["collision_triangles"] != row["surface_triangles"])
       text << " (collision " << row["collision_triangles"] << ", offset outward by up to "

@@ -1,6 +1,10 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
 #include <nlohmann/json.hpp>
 
 #include "tests/test_support.h"
@@ -21,6 +25,36 @@ TEST(InfoCommand, BunnyIsClosedWithPositiveVolume) {
   const CommandResult text = run_recoil("info " + shell_quote(source_path("assets/meshes/bunny.obj")));
   EXPECT_EQ(text.exit_code, 0);
   EXPECT_NE(text.out.find("watertight   yes"), std::string::npos) << text.out;
+}
+
+// A scene's body table: the type column starts where the longest name
+// (up to 32 characters) ends; a longer name has the line to itself.
+TEST(InfoCommand, SceneBodyColumnsStayApartForLongNames) {
+  nlohmann::json scene = nlohmann::json::parse(file_bytes(source_path("assets/scenes/jelly-stack.json")));
+  const std::string long_name = "a-very-long-body-name-from-an-artist-file-Cube.001_Material";
+  scene["bodies"][1]["name"] = long_name;
+  scene["bodies"][2]["name"] = "jelly-with-a-longer-name";
+  const auto dir = scratch_dir("info_long_names");
+  const auto path = dir / "scene.json";
+  {
+    std::ofstream out(path);
+    out << scene.dump(2);
+  }
+  const CommandResult r = run_recoil("info " + shell_quote(path));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::vector<size_t> type_columns;
+  bool long_name_alone = false;
+  for (std::string line; std::getline(lines, line);) {
+    if (line == "    " + long_name) long_name_alone = true;
+    for (const char* type : {"plane", "deformable"}) {
+      const size_t at = line.find(std::string(" ") + type);
+      if (line.rfind("    ", 0) == 0 && at != std::string::npos) type_columns.push_back(line.find(type));
+    }
+  }
+  EXPECT_TRUE(long_name_alone) << r.out;
+  ASSERT_EQ(type_columns.size(), 4u) << r.out;
+  for (size_t column : type_columns) EXPECT_EQ(column, 4u + 32u + 1u) << r.out;  // the widest column, and a space
 }
 
 TEST(InfoCommand, MissingFileIsExit2WithOneErrorLine) {
