@@ -97,7 +97,11 @@ nlohmann::json RunReport::json() const {
                           {"restarts", m_restarts},
                           {"contacts", m_contacts},
                           {"not_converged_steps", m_not_converged},
+                          // The Krylov residual the solver stopped at (its tolerance's measure) and the
+                          // KKT residual of the solution it returned (the contact laws' error, the summary's
+                          // "worst KKT"), both m/s: one solve can meet the first and miss the second.
                           {"max_residual", m_max_residual},
+                          {"worst_kkt", m_worst_kkt},
                           {"max_penetration", m_max_penetration}};
   return out;
 }

@@ -102,6 +102,8 @@ TEST(RunCommand, RendersTheSelectedFramesAndWritesSpecStats) {
   EXPECT_LT(bunny["velocity"][1].get<double>(), -0.3);
   const json run = json::parse(file_bytes(dir / "run.json"));
   for (const char* key : {"version", "build", "timings_ms", "solver_totals", "exit"}) EXPECT_TRUE(run.contains(key)) << key;
+  // The summary's worst KKT is in the solver totals too, beside the residual the solves stopped at.
+  EXPECT_EQ(run["solver_totals"]["worst_kkt"], run["warnings"]["worst_kkt"]) << run.dump();
   // The commit is the one built, taken at build time rather than when the
   // build folder was configured ("unknown" outside a git checkout).
   const fs::path head = dir / "head.txt";
