@@ -12,6 +12,7 @@
 #include "cli/file_io.h"
 #include "cli/json_cursor.h"
 #include "core/error.h"
+#include "core/lower_case.h"
 #include "sim/geometry/mesh_import.h"
 
 namespace recoil::cli {
@@ -150,20 +151,15 @@ BatchItem to_item(const JsonCursor& entry, const nlohmann::json& defaults, const
   return out;
 }
 
-std::string lower(std::string text) {
-  for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return text;
-}
-
 // Item folder names made unique in item order, ignoring case (so that they
 // stay apart on any file system): after "Cube", "cube" is "cube-2".
 void make_names_unique(std::vector<BatchItem>& items) {
   std::set<std::string> taken;
   for (BatchItem& item : items) {
     std::string name = item.name;
-    for (int n = 2; taken.count(lower(name)); ++n) name = item.name + "-" + std::to_string(n);
+    for (int n = 2; taken.count(lower_case(name)); ++n) name = item.name + "-" + std::to_string(n);
     item.name = name;
-    taken.insert(lower(name));
+    taken.insert(lower_case(name));
   }
 }
 

@@ -10,6 +10,7 @@
 
 #include "cli/shell_quote.h"
 #include "core/error.h"
+#include "core/lower_case.h"
 
 namespace recoil::cli {
 namespace fs = std::filesystem;
@@ -46,8 +47,7 @@ const VideoFormat kFormats[] = {
 };
 
 const VideoFormat* format_of(const fs::path& path) {
-  std::string extension = path.extension().string();
-  for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  const std::string extension = lower_case(path.extension().string());
   for (const VideoFormat& f : kFormats)
     if (extension == f.extension) return &f;
   return nullptr;

@@ -11,6 +11,7 @@
 
 #include "core/byte_stream.h"
 #include "core/error.h"
+#include "core/lower_case.h"
 #include "sim/geometry/isolated_reader.h"
 
 namespace recoil::sim {
@@ -34,19 +35,14 @@ std::string size_text(long long width, long long height) {
          std::to_string(kLargestTextureSide) + " a side";
 }
 
-std::string lower(std::string text) {
-  std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return std::tolower(c); });
-  return text;
-}
-
 // `path` if it is a file, else a file in its folder whose name differs only in case.
 std::optional<fs::path> existing_file(const fs::path& path) {
   std::error_code ec;
   if (fs::is_regular_file(path, ec)) return path;
-  const std::string wanted = lower(path.filename().string());
+  const std::string wanted = lower_case(path.filename().string());
   if (wanted.empty()) return std::nullopt;
   for (fs::directory_iterator it(path.parent_path(), ec), end; !ec && it != end; it.increment(ec))
-    if (lower(it->path().filename().string()) == wanted && it->is_regular_file(ec)) return it->path();
+    if (lower_case(it->path().filename().string()) == wanted && it->is_regular_file(ec)) return it->path();
   return std::nullopt;
 }
 

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "core/lower_case.h"
 
 namespace recoil::sim {
 namespace {
@@ -22,12 +23,6 @@ bool parse_count(const std::string& token, std::uint64_t& value) {
   const auto [ptr, ec] = std::from_chars(token.data(), token.data() + token.size(), value);
   if (ec == std::errc::result_out_of_range) value = UINT64_MAX;
   return ptr != token.data();
-}
-
-// assimp matches the PLY magic regardless of case ("Ply").
-std::string lower_case(std::string word) {
-  for (char& c : word) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return word;
 }
 
 // Bytes of one binary PLY value of `type` (unknown names count as 1).

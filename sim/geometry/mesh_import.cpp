@@ -17,6 +17,7 @@
 #include "core/byte_stream.h"
 #include "core/check.h"
 #include "core/error.h"
+#include "core/lower_case.h"
 #include "core/regular_file.h"
 #include "sim/geometry/isolated_reader.h"
 #include "sim/geometry/look_import.h"
@@ -135,8 +136,7 @@ ReaderAnswer read_with_assimp(const fs::path& path) {
   Gathered gathered;
   // glTF's COLOR_0 is linear by its specification; other formats' vertex
   // colours (PLY's bytes, OBJ's extension) are the sRGB values a viewer shows.
-  std::string extension = path.extension().string();
-  std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string extension = lower_case(path.extension().string());
   gathered.linear_colors = extension == ".gltf" || extension == ".glb";
   collect(*scene, *scene->mRootNode, Eigen::Matrix4d::Identity(), gathered, 0);
   ReaderAnswer answer;
