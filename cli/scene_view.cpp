@@ -17,12 +17,6 @@ constexpr double kSlabSize = 12.0;
 constexpr double kSlabThickness = 0.02;
 const render::Rgb kSlabColor = {0.55f, 0.56f, 0.58f};
 
-sim::Aabb bounds_of(const sim::Points& points) {
-  sim::Aabb box;
-  for (Eigen::Index v = 0; v < points.rows(); ++v) box.extend(points.row(v).transpose());
-  return box;
-}
-
 sim::TriMesh slab_for(const sim::PlaneDesc& plane) {
   const Eigen::Vector3d n = plane.normal.normalized();
   sim::TriMesh slab = sim::make_box(Eigen::Vector3d(kSlabSize, kSlabThickness, kSlabSize), 4);
@@ -58,7 +52,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
     sim::TriMesh mesh{s.positions, s.triangles, body && body->color_given ? nullptr : s.look};
     m_mesh_of_surface.push_back(static_cast<int>(m_render.meshes.size()));
     m_render.meshes.push_back(to_render_mesh(mesh, color, opacity, &looks));
-    const sim::Aabb b = bounds_of(s.positions);
+    const sim::Aabb b = sim::bounding_box(s.positions);
     if (!b.valid()) continue;
     if (s.name == m_camera.body) {
       m_follow = static_cast<int>(i);
@@ -96,7 +90,7 @@ const render::RenderScene& SceneView::update(const std::vector<sim::BodySurface>
                "surfaces=" << surfaces.size() << " meshes=" << m_mesh_of_surface.size());
   for (size_t i = 0; i < surfaces.size(); ++i)
     update_positions(m_render.meshes[static_cast<size_t>(m_mesh_of_surface[i])], surfaces[i].positions);
-  if (m_follow >= 0) m_follow_box = bounds_of(surfaces[static_cast<size_t>(m_follow)].positions);
+  if (m_follow >= 0) m_follow_box = sim::bounding_box(surfaces[static_cast<size_t>(m_follow)].positions);
   return m_render;
 }
 

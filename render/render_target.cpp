@@ -68,7 +68,8 @@ RenderTarget::RenderTarget(int width, int height, int msaa)
       const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
       throw bad_input("render msaa " + std::to_string(msaa) + ": this OpenGL driver (" +
                       std::string(renderer ? renderer : "unknown") + ") draws " + std::to_string(samples) +
-                      " samples when asked for " + std::to_string(msaa) + "; use msaa 0 or " + std::to_string(samples));
+                      " samples when asked for " + std::to_string(msaa) + "; use msaa 0" +
+                      (samples == 2 || samples == 4 ? " or " + std::to_string(samples) : std::string()));
     }
     m_resolve_color = gl::Renderbuffer::create();
     m_resolve = gl::Framebuffer::create();

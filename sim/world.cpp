@@ -27,12 +27,6 @@ void check_friction(double static_coefficient, double kinetic_coefficient, const
     throw bad_input(where + ": friction coefficients must be finite and >= 0");
 }
 
-Aabb bounds(const Points& p) {
-  Aabb box;
-  for (Eigen::Index i = 0; i < p.rows(); ++i) box.extend(p.row(i).transpose());
-  return box;
-}
-
 }  // namespace
 
 const char* to_string(StepStatus status) {
@@ -174,7 +168,7 @@ void World::reset_energy_reference() {
       box = bounding_box(body.deformable->surface);
       mass = body.deformable->mass.sum();
     } else {
-      box = bounds(body.rigid->local);
+      box = bounding_box(body.rigid->local);
       mass = body.rigid->mass;
     }
     m_energy0[i] = total_energy(static_cast<int>(i), elastic);
@@ -295,15 +289,11 @@ std::vector<Aabb> World::body_bounds() const {
     Points nodes(body.num_nodes, 3);
     for (int n = 0; n < body.num_nodes; ++n) nodes.row(n) = m_x.segment<3>(3 * (body.node_offset + n)).transpose();
     embedded_positions(body.embedding, body.rest.tets, nodes, posed);
-    Aabb box;
-    for (Eigen::Index v = 0; v < posed.rows(); ++v) box.extend(posed.row(v).transpose());
-    out.push_back(box);
+    out.push_back(bounding_box(posed));
   }
   for (const RigidBody& body : m_rigid) {
     world_points(body.local, body.pose, posed);
-    Aabb box;
-    for (Eigen::Index v = 0; v < posed.rows(); ++v) box.extend(posed.row(v).transpose());
-    out.push_back(box);
+    out.push_back(bounding_box(posed));
   }
   return out;
 }

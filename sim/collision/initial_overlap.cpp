@@ -11,11 +11,6 @@
 namespace recoil::sim {
 namespace {
 
-Aabb surface_box(const Points& x) {
-  Aabb box;
-  for (Eigen::Index v = 0; v < x.rows(); ++v) box.extend(x.row(v).transpose());
-  return box;
-}
 
 bool boxes_overlap(const Aabb& a, const Aabb& b) {
   return (a.min.array() <= b.max.array()).all() && (b.min.array() <= a.max.array()).all();
@@ -54,7 +49,7 @@ std::optional<SurfaceOverlap> deepest_overlap(const std::vector<CollisionSurface
     }
   }
   std::vector<Aabb> boxes;
-  for (const CollisionSurface& s : surfaces) boxes.push_back(surface_box(s.x0));
+  for (const CollisionSurface& s : surfaces) boxes.push_back(bounding_box(s.x0));
   std::vector<std::unique_ptr<WindingNumberTree>> trees(surfaces.size());  // built when first needed
   int probes = 0;  // exact depths measured: each costs a pass over the other surface's triangles
   for (size_t a = 0; a < surfaces.size(); ++a) {

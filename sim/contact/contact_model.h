@@ -13,7 +13,7 @@
 //   rhs_tangent   = J_t dv - t.d*/h            so sticking means no relative tangential motion
 // Resting distance g_rest = clamp(g0, 0, rest_gap_fraction * margin) (ContactPolicy), with g0
 // the candidate's gap at the start of the step: contacts that approach stop a
-// tenth of the margin apart instead of exactly touching. At zero distance the
+// share of the margin apart (a tenth by default) instead of exactly touching. At zero distance the
 // next step cannot tell a vertex resting on a corner from one beside it (the
 // top and side faces both contain the corner), and a stack of boxes then
 // falls through itself; a small positive distance keeps p - q meaningful. A
@@ -63,7 +63,7 @@ class ContactModel final : public ContactLinearization {
   // the candidates' plane order. `detector` (may be null) re-runs the search
   // for add_new_contacts; `margin` in m; `policy` gives the rest gap.
   ContactModel(std::vector<ContactSurface> surfaces, std::vector<ContactPlane> planes, DofState state, double margin,
-               CollisionDetector* detector, const ContactPolicy& policy = {});
+               CollisionDetector* detector, const ContactPolicy& policy);
 
   // The detector's input for the step x0 -> predicted(dv).
   std::vector<CollisionSurface> collision_surfaces(const Eigen::VectorXd& dv) const;

@@ -17,8 +17,7 @@ namespace {
 // A uniform grid of buckets holding the tets whose bounding box touches them.
 class TetGrid {
  public:
-  explicit TetGrid(const TetMesh& mesh) {
-    for (int i = 0; i < mesh.num_nodes(); ++i) m_box.extend(mesh.nodes.row(i).transpose());
+  explicit TetGrid(const TetMesh& mesh) : m_box(bounding_box(mesh.nodes)) {
     const double cells_per_axis = std::max(1.0, std::cbrt(static_cast<double>(mesh.num_tets()) / 2.0));
     m_h = std::max(m_box.extent().maxCoeff() / cells_per_axis, 1e-12);
     for (int a = 0; a < 3; ++a) m_n[a] = std::max(1, static_cast<int>(std::ceil(m_box.extent()[a] / m_h)));

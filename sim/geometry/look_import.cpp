@@ -154,9 +154,14 @@ std::vector<LookMaterial> read_materials(const aiScene& scene, const fs::path& m
         m.has_color = true;
         m.color = {unit_interval(color.r, 1.0f), unit_interval(color.g, 1.0f), unit_interval(color.b, 1.0f)};
       }
+      // A metallic-roughness map (not drawn) scales the factors, which glTF
+      // then often leaves at their default of 1: without it they would
+      // draw a full metal, so such a material keeps the studio's surface.
+      const bool mapped = material->GetTextureCount(aiTextureType_METALNESS) > 0 ||
+                          material->GetTextureCount(aiTextureType_DIFFUSE_ROUGHNESS) > 0;
       float metallic = 0.0f, roughness = 1.0f;
       const bool has_metallic = material->Get(AI_MATKEY_METALLIC_FACTOR, metallic) == AI_SUCCESS;
-      if (material->Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness) == AI_SUCCESS) {
+      if (!mapped && material->Get(AI_MATKEY_ROUGHNESS_FACTOR, roughness) == AI_SUCCESS) {
         m.has_surface = true;
         m.metallic = has_metallic ? unit_interval(metallic, 0.0f) : 0.0f;
         m.roughness = unit_interval(roughness, 1.0f);

@@ -71,8 +71,7 @@ struct Builder {
       }
     }
     // Positive orientation; a (near) zero-volume tet is an error of the file.
-    Aabb box;
-    for (int i = 0; i < mesh.num_nodes(); ++i) box.extend(mesh.nodes.row(i).transpose());
+    const Aabb box = bounding_box(mesh.nodes);
     const double diag = box.extent().norm();
     const double eps = 1e-14 * diag * diag * diag;
     for (int t = 0; t < mesh.num_tets(); ++t) {

@@ -35,8 +35,7 @@ double longest_tet_edge(const TetMesh& mesh) {
 }
 
 int orient_positive(TetMesh& mesh, int* degenerate, double eps_rel) {
-  Aabb box;
-  for (int i = 0; i < mesh.num_nodes(); ++i) box.extend(mesh.nodes.row(i).transpose());
+  const Aabb box = bounding_box(mesh.nodes);
   const double diag = box.valid() ? box.extent().norm() : 0.0;
   const double eps = eps_rel * diag * diag * diag;
   int flipped = 0, flat = 0;

@@ -2,9 +2,9 @@
 
 namespace recoil::sim {
 
-Aabb bounding_box(const TriMesh& mesh) {
+Aabb bounding_box(const Points& points) {
   Aabb box;
-  for (int i = 0; i < mesh.num_vertices(); ++i) box.extend(mesh.vertices.row(i).transpose());
+  for (Eigen::Index i = 0; i < points.rows(); ++i) box.extend(points.row(i).transpose());
   return box;
 }
 

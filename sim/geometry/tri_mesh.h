@@ -35,7 +35,9 @@ struct Aabb {
   bool valid() const { return (min.array() <= max.array()).all(); }
 };
 
-Aabb bounding_box(const TriMesh& mesh);
+// The box around a #N by 3 point list (invalid when it is empty).
+Aabb bounding_box(const Points& points);
+inline Aabb bounding_box(const TriMesh& mesh) { return bounding_box(mesh.vertices); }
 
 // Row i of a #V by 3 point list as a column vector.
 inline Eigen::Vector3d point_at(const Points& points, int i) { return points.row(i).transpose(); }

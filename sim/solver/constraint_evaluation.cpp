@@ -96,8 +96,8 @@ Proposal activate(const ContactState& s, const ContactTrack& track, const Eigen:
 }
 
 // Algorithm 2, lines 11-13: a sticking contact whose friction impulse left
-// the static cone slides, along -gamma, with lambda' = |gamma| / mu taken as
-// the current lambda. It breaks away only when the tangential residual u
+// the static cone slides, along -gamma, its lambda' starting at the current
+// lambda. It breaks away only when the tangential residual u
 // does not push along gamma: the rows' own correction would otherwise undo
 // the step.
 void update_static_friction(const ContactRows& rows, const Eigen::Vector2d& u, const Evaluation& e, double w_t,
@@ -129,7 +129,8 @@ bool reverses(const ContactRows& rows, const ContactState& s, const Eigen::Vecto
   const double speed = u.norm();
   const bool reversed =
       undirected ? speed <= e.eps2 : (u.dot(s.slip) < -e.eps2 && u.dot(s.slip) < -e.policy.reversal * speed);
-  if (rows.mu_static <= 0.0 || !reversed) return false;
+  const bool can_stick = rows.mu_static > 0.0;
+  if (!can_stick || !reversed) return false;
   p.state.mode = ContactMode::sticking;
   p.f.tail<2>() = -rows.mu_kinetic * s.lambda_kinetic * s.slip;
   p.state.lambda_kinetic = 0.0;
@@ -154,14 +155,14 @@ Eigen::Vector2d turn_slip(const ContactRows& rows, const ContactState& s, const 
   const ContactPolicy& policy = e.policy;
   const double speed = u.norm();
   Eigen::Vector2d aim = s.slip;
-  if (speed <= e.eps2) return aim;
+  if (!(speed > e.eps2)) return aim;
   const Eigen::Vector2d u_hat = u / speed;
   if (s.slip.squaredNorm() == 0.0) {  // undirected: take u's direction
     p.state.slip = aim = u_hat;
     return aim;
   }
   const double error_now = signed_angle(s.slip, u_hat);  // rad, from the slip to u
-  if (std::abs(error_now) <= policy.eps_theta) return aim;  // line 6: theta below epsilon_theta
+  if (!(std::abs(error_now) > policy.eps_theta)) return aim;  // line 6: theta below epsilon_theta
   // The same measure as the KKT residual's, on lambda'.
   direction_error = slip_direction_error(rows.mu_kinetic * p.state.lambda_kinetic * w_t, u, s.slip);
   const int turn = error_now > 0.0 ? 1 : -1;
@@ -264,7 +265,8 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   }
   if (!e.converged) return p;  // u is not yet trustworthy
   if (!frozen && reverses(rows, s, u, e, p)) return p;  // lines 14-16
-  if (rows.mu_kinetic > 0.0) update_kinetic_friction(rows, s, u, w_t, e, p);  // line 17, frozen or not
+  const bool frictionless = rows.mu_kinetic <= 0.0;
+  if (!frictionless) update_kinetic_friction(rows, s, u, w_t, e, p);  // line 17, frozen or not
   return p;
 }
 
@@ -342,7 +344,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
       // and the tangent rows are read only for one that comes on. A contact
       // let go after freezing stays off.
       const double slack = normal_row_times(rows, dv) - rows.rhs_normal;
-      if (slack >= -e.eps2 || track.locked_off) continue;
+      if (!(slack < -e.eps2) || track.locked_off) continue;  // not penetrating (a NaN slack included)
       p = activate(s, track, f, slack, rows_times(rows, dv).tail<2>() - rows.rhs_tangent, e);
     } else {
       // The selected rows' own yield counts as motion (ContactSoftness).

@@ -136,7 +136,7 @@ struct RowScene {
     s[2].angular_velocity = kinematic.angular_velocity;
     ContactPlane plane;
     plane.plane.normal = Eigen::Vector3d(0.1, 1.0, 0.0).normalized();
-    return ContactModel(std::move(s), {plane}, DofState{&x, &v, h}, 0.002, nullptr);
+    return ContactModel(std::move(s), {plane}, DofState{&x, &v, h}, 0.002, nullptr, ContactPolicy{});
   }
 };
 
