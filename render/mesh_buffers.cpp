@@ -131,13 +131,13 @@ void MeshBuffers::set_look(const RenderMesh& mesh) {
   glEnableVertexAttribArray(3);
 }
 
-void MeshBuffers::upload(const RenderMesh& mesh) {
+bool MeshBuffers::upload(const RenderMesh& mesh) {
   RECOIL_CHECK(mesh.positions.size() % 3 == 0, "positions.size()=" << mesh.positions.size());
   RECOIL_CHECK(mesh.indices.size() % 3 == 0, "indices.size()=" << mesh.indices.size());
   const bool topology_changed = mesh.positions.size() != m_input_floats || mesh.look != m_look ||
                                 !std::equal(mesh.indices.begin(), mesh.indices.end(), m_indices.begin(), m_indices.end());
   if (topology_changed) set_topology(mesh);
-  else if (mesh.positions == m_sent_positions) return;
+  else if (mesh.positions == m_sent_positions) return false;
   m_input_floats = mesh.positions.size();
   m_sent_positions = mesh.positions;
 
@@ -159,6 +159,7 @@ void MeshBuffers::upload(const RenderMesh& mesh) {
   send(m_positions.get(), *positions, grow);
   send(m_normals.get(), *normals, grow);
   if (grow) m_capacity = positions->size();
+  return true;
 }
 
 void MeshBuffers::draw() const {

@@ -26,9 +26,10 @@ class MeshBuffers {
 
   MeshBuffers();
 
-  // Recomputes normals and uploads, unless the mesh is the one uploaded last. Aborts (RECOIL_CHECK) on malformed
-  // arrays: positions not a multiple of 3, an index past the vertex count, a look of another triangle count.
-  void upload(const RenderMesh& mesh);
+  // Recomputes normals and uploads, unless the mesh is the one uploaded last; true when it uploaded. Aborts
+  // (RECOIL_CHECK) on malformed arrays: positions not a multiple of 3, an index past the vertex count, a look of
+  // another triangle count.
+  bool upload(const RenderMesh& mesh);
 
   // Binds the vertex array and draws all triangles (indexed).
   void draw() const;

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/error.h"
@@ -34,6 +35,11 @@ int shadow_map_size(const RenderSettings& s) {
 
 constexpr GLenum kShadowUnit = GL_TEXTURE0;
 constexpr GLenum kMaterialUnit = GL_TEXTURE1;
+// Receivers look up the map this far off their surface, against acne.
+constexpr double kNormalOffsetTexels = 1.5;
+// How far a receiver's lookups reach past its own shadow-map texel: the
+// normal offset, the taps' 0.75 and the 2x2 comparison's 1, rounded up.
+constexpr double kShadowReachTexels = 4.0;
 constexpr float kOpaque = 0.999f;  // opacity at or above this draws in the opaque pass
 
 // Axis-aligned bounds of a mesh's positions (#V*3); empty when lo > hi.
@@ -118,10 +124,22 @@ struct Frame {
   Eigen::Vector3d center;  // of the visible meshes' bounding box (metres)
   double radius = 1.0;     // half its diagonal
   bool shadows = false;
+  bool meshes_changed = false;  // some mesh was uploaded anew
   StudioLights lights;
   GroundLayout ground;
   Eigen::Matrix4f view_projection;  // world to clip, 4 by 4
   std::array<float, 3> background;  // linear
+};
+
+// What the shadow map was drawn from: while it stays the same and no mesh
+// changed, so does the map, and the pass is skipped.
+struct ShadowSource {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double radius = 0.0;  // 0: no map drawn yet
+  Eigen::Vector3d to_light = Eigen::Vector3d::Zero();
+  std::vector<bool> casts;  // per mesh slot
+
+  bool operator==(const ShadowSource& other) const = default;
 };
 
 // The mesh programs of one frame (with or without shadows), lit alike.
@@ -139,6 +157,7 @@ struct Renderer::Impl {
   std::array<ShaderProgram, 4> mesh_programs;
   std::array<ShaderProgram, 4> ground_programs;  // index: shadows + 2 * grid
   ShaderProgram catcher_program;  // the ground over a transparent background
+  ShaderProgram clear_floor_program;  // ... where it can catch no shadow
   ShaderProgram depth_program;
   ShaderProgram wire_program;
   Ground ground;
@@ -146,6 +165,8 @@ struct Renderer::Impl {
   TextureCache textures;
   std::vector<Bounds> mesh_bounds;
   std::vector<size_t> transparent_order;
+  ShadowSource shadow_source;
+  std::size_t shadow_passes = 0;
 
   explicit Impl(const RenderSettings& s)
       : context(s.gl),
@@ -161,6 +182,7 @@ struct Renderer::Impl {
             ShaderProgram("ground+grid", shaders::ground_vertex(), shaders::ground_fragment(false, true)),
             ShaderProgram("ground+grid+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, true))},
         catcher_program("shadow catcher", shaders::ground_vertex(), shaders::shadow_catcher_fragment()),
+        clear_floor_program("clear floor", shaders::ground_vertex(), shaders::flat_fragment()),
         depth_program("depth", shaders::depth_vertex(), shaders::depth_fragment()),
         wire_program("wireframe", shaders::mesh_vertex(), shaders::flat_fragment()) {}
 
@@ -172,7 +194,7 @@ struct Renderer::Impl {
   void draw_mesh(const RenderSettings& settings, const RenderMesh& mesh, const MeshBuffers& buffers,
                  const MeshPrograms& programs);
   void draw_ground(const RenderSettings& settings, const RenderScene& scene, const Frame& frame);
-  void draw_shadow_catcher(const Frame& frame);
+  void draw_shadow_catcher(const Frame& frame, const GroundLayout& g);
   void draw_transparent(const RenderSettings& settings, const RenderScene& scene, const Camera& camera,
                         const MeshPrograms& programs);
 };
@@ -181,6 +203,8 @@ Renderer::Renderer(const RenderSettings& settings) : m_settings(settings) {
   validate(settings);
   m_impl = std::make_unique<Impl>(settings);
 }
+
+std::size_t Renderer::shadow_passes() const { return m_impl->shadow_passes; }
 
 GlBackend Renderer::backend() const { return m_impl->context.backend(); }
 
@@ -207,13 +231,13 @@ Frame Renderer::Impl::upload(const RenderSettings& settings, const RenderScene& 
   // bounds of the visible ones frame the shadow map, floor and depth range.
   meshes.resize(scene.meshes.size());
   mesh_bounds.resize(scene.meshes.size());
+  Frame frame;
   Bounds scene_bounds;
   for (size_t i = 0; i < scene.meshes.size(); ++i) {
-    meshes[i].upload(scene.meshes[i]);
+    if (meshes[i].upload(scene.meshes[i])) frame.meshes_changed = true;
     mesh_bounds[i] = bounds_of(scene.meshes[i].positions);
     if (scene.meshes[i].opacity > 0.0f && !scene.meshes[i].indices.empty()) scene_bounds.add(mesh_bounds[i]);
   }
-  Frame frame;
   frame.center = camera.target;
   const double size = (scene_bounds.hi - scene_bounds.lo).norm();
   const bool has_meshes = !scene_bounds.empty() && std::isfinite(size);
@@ -242,6 +266,11 @@ Frame Renderer::Impl::upload(const RenderSettings& settings, const RenderScene& 
 
 void Renderer::Impl::shadow_pass(const RenderScene& scene, const Frame& frame) {
   // Every visible mesh casts; the floor only receives.
+  ShadowSource source{frame.center, frame.radius, frame.lights.key.to_light, {}};
+  for (const RenderMesh& mesh : scene.meshes) source.casts.push_back(mesh.opacity > 0.0f);
+  if (!frame.meshes_changed && source == shadow_source) return;
+  shadow_source = std::move(source);
+  ++shadow_passes;
   const Eigen::Matrix4f light_clip = shadow_map.begin(frame.center, frame.radius, frame.lights.key.to_light);
   glClear(GL_DEPTH_BUFFER_BIT);
   // Slope-scaled offset keeps lit surfaces from shadowing themselves (acne).
@@ -264,8 +293,7 @@ void Renderer::Impl::set_common(ShaderProgram& p, const Frame& frame) {
   p.use();
   set(p, "u_view_projection", frame.view_projection);
   set(p, "u_light_matrix", shadow_map.texture_matrix());
-  // Receivers look up the map 1.5 texels off their surface, against acne.
-  set(p, "u_normal_offset", static_cast<float>(1.5 * shadow_map.texel_world()));
+  set(p, "u_normal_offset", static_cast<float>(kNormalOffsetTexels * shadow_map.texel_world()));
   set(p, "u_shadow_map", static_cast<int>(kShadowUnit - GL_TEXTURE0));
   const float texel = 1.0f / static_cast<float>(shadow_map.size());
   glUniform2f(p.location("u_shadow_texel"), texel, texel);
@@ -330,31 +358,47 @@ void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh&
 }
 
 void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
+  // Shadow lookups run on the floor's cell that can be in shadow; around it
+  // the key light is unblocked, which the lookups would return anyway.
+  GroundLayout g = frame.ground;
+  if (frame.shadows) {
+    shadow_cell(g, frame.center, frame.radius, frame.lights.key.to_light,
+                kShadowReachTexels * shadow_map.texel_world());
+  }
   if (settings.transparent_background) {
-    draw_shadow_catcher(frame);
+    draw_shadow_catcher(frame, g);
     return;
   }
-  ShaderProgram& p = ground_programs[(frame.shadows ? 1 : 0) + (scene.grid ? 2 : 0)];
-  set_common(p, frame);
   // The floor is flat and the lights directional, so its lighting is two
   // constants: the key's share (shadowed per pixel) and the rest.
   const StudioLights& lights = frame.lights;
   const Eigen::Vector3f key_light = lights.key.color * static_cast<float>(std::max(lights.key.to_light.y(), 0.0));
   const Eigen::Vector3f other_light =
       lights.fill.color * static_cast<float>(std::max(lights.fill.to_light.y(), 0.0)) + lights.sky_ambient;
-  set(p, "u_key_light", key_light);
-  set(p, "u_other_light", other_light);
-  set(p, "u_albedo", Eigen::Vector3f(0.15f, 0.155f, 0.16f));
-  set(p, "u_line_albedo", Eigen::Vector3f(0.26f, 0.27f, 0.28f));
-  const GroundLayout& g = frame.ground;
-  glUniform2f(p.location("u_center"), static_cast<float>(g.center_x), static_cast<float>(g.center_z));
-  glUniform2f(p.location("u_fade"), static_cast<float>(g.fade_start), static_cast<float>(g.fade_end));
-  set(p, "u_spacing", static_cast<float>(g.grid_spacing));
-  glUniform4f(p.location("u_background"), frame.background[0], frame.background[1], frame.background[2], 1.0f);
-  ground.draw(g);
+  auto use = [&](ShaderProgram& p) {
+    set_common(p, frame);
+    set(p, "u_key_light", key_light);
+    set(p, "u_other_light", other_light);
+    set(p, "u_albedo", Eigen::Vector3f(0.15f, 0.155f, 0.16f));
+    set(p, "u_line_albedo", Eigen::Vector3f(0.26f, 0.27f, 0.28f));
+    glUniform2f(p.location("u_center"), static_cast<float>(g.center_x), static_cast<float>(g.center_z));
+    glUniform2f(p.location("u_fade"), static_cast<float>(g.fade_start), static_cast<float>(g.fade_end));
+    set(p, "u_spacing", static_cast<float>(g.grid_spacing));
+    glUniform4f(p.location("u_background"), frame.background[0], frame.background[1], frame.background[2], 1.0f);
+  };
+  ShaderProgram& lit = ground_programs[scene.grid ? 2 : 0];
+  if (frame.shadows) {
+    use(ground_programs[1 + (scene.grid ? 2 : 0)]);
+    ground.draw_cell(g);
+    use(lit);
+    ground.draw_surround(g);
+  } else {
+    use(lit);
+    ground.draw(g);
+  }
 }
 
-void Renderer::Impl::draw_shadow_catcher(const Frame& frame) {
+void Renderer::Impl::draw_shadow_catcher(const Frame& frame, const GroundLayout& g) {
   if (!frame.shadows) return;  // nothing to catch
   ShaderProgram& p = catcher_program;
   set_common(p, frame);
@@ -365,12 +409,16 @@ void Renderer::Impl::draw_shadow_catcher(const Frame& frame) {
   const float other = luma.dot(lights.fill.color) * static_cast<float>(std::max(lights.fill.to_light.y(), 0.0)) +
                       luma.dot(lights.sky_ambient);
   set(p, "u_shadow_strength", key + other > 0.0f ? key / (key + other) : 0.0f);
-  const GroundLayout& g = frame.ground;
   glUniform2f(p.location("u_center"), static_cast<float>(g.center_x), static_cast<float>(g.center_z));
   glUniform2f(p.location("u_fade"), static_cast<float>(g.fade_start), static_cast<float>(g.fade_end));
   // Like the floor it stands for, it replaces what is behind it (the
-  // transparent clear colour, or a body's part below the ground) and writes depth.
-  ground.draw(g);
+  // transparent clear colour, or a body's part below the ground) and writes
+  // depth; around the cell that replacement is all it does.
+  ground.draw_cell(g);
+  clear_floor_program.use();
+  set(clear_floor_program, "u_view_projection", frame.view_projection);
+  glUniform4f(clear_floor_program.location("u_color"), 0.0f, 0.0f, 0.0f, 0.0f);
+  ground.draw_surround(g);
 }
 
 void Renderer::Impl::draw_transparent(const RenderSettings& settings, const RenderScene& scene,

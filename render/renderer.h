@@ -6,6 +6,7 @@
 // blended back to front), MSAA, sRGB-correct output.
 // Owns its OpenGL context and every GL object, reused across frames; the same
 // scene, camera and settings give identical bytes.
+#include <cstddef>
 #include <memory>
 
 #include "render/camera.h"
@@ -44,6 +45,9 @@ class Renderer {
   void render(const RenderScene& scene, const Camera& camera, Image& image);
 
   const RenderSettings& settings() const { return m_settings; }
+  // Times the key light's shadow map was drawn: once per frame at most, and
+  // not again while the meshes and the light are those it was drawn from.
+  std::size_t shadow_passes() const;
   // The backend in use (never automatic) and its GL_RENDERER string.
   GlBackend backend() const;
   std::string gl_renderer();

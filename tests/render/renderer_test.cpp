@@ -326,6 +326,35 @@ TEST(Renderer, FloorFollowsGroundHeightAndToggles) {
   EXPECT_NE(at(base, 0, 63), (std::array<int, 4>{0x1d, 0x21, 0x27, 255}));
 }
 
+TEST(Renderer, TheShadowMapIsRedrawnOnlyWhenWhatItSeesChanged) {
+  const RenderSettings settings = small(4, true);
+  Renderer renderer(settings);
+  RenderScene scene;
+  scene.meshes = {test::make_box({0.0f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.8f, 0.8f, 0.8f})};
+  const Camera camera = studio_camera(settings);
+  const Image first = renderer.render(scene, camera);
+  EXPECT_EQ(renderer.shadow_passes(), 1u);
+  // Nothing moved: the map is reused, and the frame is the same.
+  EXPECT_EQ(renderer.render(scene, camera).rgba, first.rgba);
+  EXPECT_EQ(renderer.shadow_passes(), 1u);
+  // A mesh moved: redrawn, and the frame is what a fresh renderer draws.
+  scene.meshes[0] = test::make_box({0.3f, 0.5f, 0.0f}, {1.0f, 1.0f, 1.0f}, {0.8f, 0.8f, 0.8f});
+  const Image moved = renderer.render(scene, camera);
+  EXPECT_EQ(renderer.shadow_passes(), 2u);
+  EXPECT_EQ(moved.rgba, Renderer(settings).render(scene, camera).rgba);
+  EXPECT_NE(moved.rgba, first.rgba);
+  // The camera turned, and the studio's key light with it: redrawn.
+  const Camera turned = frame_bounding_sphere({0.0, 0.5, 0.0}, 1.6, 75.0, 20.0, 40.0, 96.0 / 64.0);
+  EXPECT_EQ(renderer.render(scene, turned).rgba, Renderer(settings).render(scene, turned).rgba);
+  EXPECT_EQ(renderer.shadow_passes(), 3u);
+  // A mesh hidden (opacity 0) no longer casts: redrawn.
+  scene.meshes.push_back(test::make_box({-0.6f, 0.2f, 0.0f}, {0.4f, 0.4f, 0.4f}, {0.8f, 0.2f, 0.2f}));
+  renderer.render(scene, turned);
+  scene.meshes[1].opacity = 0.0f;
+  EXPECT_EQ(renderer.render(scene, turned).rgba, Renderer(settings).render(scene, turned).rgba);
+  EXPECT_EQ(renderer.shadow_passes(), 5u);
+}
+
 TEST(Renderer, RejectsADegenerateCamera) {
   Renderer renderer(small(0));
   Camera camera = front_camera();
