@@ -19,6 +19,7 @@ struct RenderOptions {
   bool no_ground = false;               // the ground plane is not drawn
   std::string background = "#1d2127";   // #rrggbb or "transparent"
   bool wireframe = false;
+  bool ambient_occlusion = false;
   std::string color;                    // #rrggbb, empty: the default palette
   double camera_distance = 0.0;         // metres from the target; 0: fit the scene
   double azimuth = 0.0;                 // degrees about +y from +z (only when given)
@@ -29,7 +30,7 @@ struct RenderOptions {
   std::string gl = "auto";              // the OpenGL backend: auto, osmesa or egl (a property of the machine, not the scene)
 };
 
-// Adds --resolution, --fps, --msaa, --no-shadows, --no-ground, --background, --wireframe,
+// Adds --resolution, --fps, --msaa, --no-shadows, --ao, --no-ground, --background, --wireframe,
 // --color, --camera-distance, --azimuth, --fov, --camera-position,
 // --camera-target, --png-level, --gl to `command`, in a "Rendering" group.
 void add_render_options(CLI::App& command, RenderOptions& options);

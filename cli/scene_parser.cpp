@@ -85,7 +85,8 @@ void parse_camera(const JsonCursor& c, SceneDesc& scene) {
 }
 
 void parse_render(const JsonCursor& c, SceneDesc& scene) {
-  c.expect_object({"resolution", "fps", "msaa", "shadows", "background", "wireframe", "png_level", "ground", "camera"});
+  c.expect_object({"resolution", "fps", "msaa", "shadows", "background", "wireframe", "ambient_occlusion", "png_level", "ground",
+                   "camera"});
   RenderOptions& r = scene.render;
   if (c.has("resolution")) {
     const auto wh = c.child("resolution").elements(2);
@@ -98,6 +99,7 @@ void parse_render(const JsonCursor& c, SceneDesc& scene) {
   if (r.msaa == 1 || r.msaa == 3) c.child("msaa").fail("must be 0, 2 or 4, got " + std::to_string(r.msaa));
   r.no_shadows = !c.boolean_or("shadows", true);
   r.wireframe = c.boolean_or("wireframe", false);
+  r.ambient_occlusion = c.boolean_or("ambient_occlusion", false);
   r.png_level = c.integer_in_or("png_level", r.png_level, 0, 9);
   r.background = c.string_or("background", r.background);
   if (r.background != "transparent") parse_color(r.background, c.file() + ": " + c.pointer() + "/background");

@@ -121,6 +121,7 @@ json render_json(const SceneDesc& scene) {
           {"shadows", !r.no_shadows},
           {"background", r.background},
           {"wireframe", r.wireframe},
+          {"ambient_occlusion", r.ambient_occlusion},
           {"png_level", r.png_level},
           {"ground", {{"grid", scene.grid}, {"visible", !r.no_ground}}},
           {"camera", camera_json(scene.camera)}};

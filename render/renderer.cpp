@@ -5,11 +5,13 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <string>
 #include <utility>
 #include <vector>
 
 #include "core/error.h"
+#include "render/ambient_occlusion.h"
 #include "render/context.h"
 #include "render/gl.h"
 #include "render/ground.h"
@@ -35,6 +37,10 @@ int shadow_map_size(const RenderSettings& s) {
 
 constexpr GLenum kShadowUnit = GL_TEXTURE0;
 constexpr GLenum kMaterialUnit = GL_TEXTURE1;
+constexpr GLenum kOcclusionUnit = GL_TEXTURE2;
+// The occlusion's reach as a share of the scene's bounding radius: creases
+// and the gap under a resting body, not the whole room.
+constexpr double kOcclusionReach = 0.15;
 // Receivers look up the map this far off their surface, against acne.
 constexpr double kNormalOffsetTexels = 1.5;
 // How far a receiver's lookups reach past its own shadow-map texel: the
@@ -109,6 +115,17 @@ std::string hex(unsigned value) {
   return text;
 }
 
+// The programs' ambient occlusion is the renderer's, fixed by its settings.
+ShaderProgram mesh_program(bool shadows, bool textured, const RenderSettings& s) {
+  const std::string name = std::string("mesh") + (shadows ? "+shadow" : "") + (textured ? "+texture" : "");
+  return ShaderProgram(name, shaders::mesh_vertex(), shaders::mesh_fragment(shadows, textured, s.ambient_occlusion));
+}
+
+ShaderProgram ground_program(bool shadows, bool grid, const RenderSettings& s) {
+  const std::string name = std::string("ground") + (grid ? "+grid" : "") + (shadows ? "+shadow" : "");
+  return ShaderProgram(name, shaders::ground_vertex(), shaders::ground_fragment(shadows, grid, s.ambient_occlusion));
+}
+
 void set_culling(bool cull) {
   if (cull) {
     glEnable(GL_CULL_FACE);
@@ -128,6 +145,8 @@ struct Frame {
   StudioLights lights;
   GroundLayout ground;
   Eigen::Matrix4f view_projection;  // world to clip, 4 by 4
+  Eigen::Matrix4f projection;       // view to clip, 4 by 4
+  bool occlusion = false;
   std::array<float, 3> background;  // linear
 };
 
@@ -153,6 +172,7 @@ struct Renderer::Impl {
   GlContext context;
   RenderTarget target;
   ShadowMap shadow_map;
+  std::unique_ptr<AmbientOcclusion> occlusion;  // null when the settings have none
   // Index: shadows + 2 * textured (the key light's shadow lookups, a base-colour map).
   std::array<ShaderProgram, 4> mesh_programs;
   std::array<ShaderProgram, 4> ground_programs;  // index: shadows + 2 * grid
@@ -172,15 +192,11 @@ struct Renderer::Impl {
       : context(s.gl),
         target(s.width, s.height, s.msaa),
         shadow_map(shadow_map_size(s)),
-        mesh_programs{ShaderProgram("mesh", shaders::mesh_vertex(), shaders::mesh_fragment(false, false)),
-                      ShaderProgram("mesh+shadow", shaders::mesh_vertex(), shaders::mesh_fragment(true, false)),
-                      ShaderProgram("mesh+texture", shaders::mesh_vertex(), shaders::mesh_fragment(false, true)),
-                      ShaderProgram("mesh+shadow+texture", shaders::mesh_vertex(), shaders::mesh_fragment(true, true))},
-        ground_programs{
-            ShaderProgram("ground", shaders::ground_vertex(), shaders::ground_fragment(false, false)),
-            ShaderProgram("ground+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, false)),
-            ShaderProgram("ground+grid", shaders::ground_vertex(), shaders::ground_fragment(false, true)),
-            ShaderProgram("ground+grid+shadow", shaders::ground_vertex(), shaders::ground_fragment(true, true))},
+        occlusion(s.ambient_occlusion ? std::make_unique<AmbientOcclusion>(s.width, s.height) : nullptr),
+        mesh_programs{mesh_program(false, false, s), mesh_program(true, false, s), mesh_program(false, true, s),
+                      mesh_program(true, true, s)},
+        ground_programs{ground_program(false, false, s), ground_program(true, false, s),
+                        ground_program(false, true, s), ground_program(true, true, s)},
         catcher_program("shadow catcher", shaders::ground_vertex(), shaders::shadow_catcher_fragment()),
         clear_floor_program("clear floor", shaders::ground_vertex(), shaders::flat_fragment()),
         depth_program("depth", shaders::depth_vertex(), shaders::depth_fragment()),
@@ -189,6 +205,7 @@ struct Renderer::Impl {
   void draw(const RenderSettings& settings, const RenderScene& scene, const Camera& camera, Image& image);
   Frame upload(const RenderSettings& settings, const RenderScene& scene, const Camera& camera);
   void shadow_pass(const RenderScene& scene, const Frame& frame);
+  void occlusion_pass(const RenderSettings& settings, const RenderScene& scene, const Frame& frame);
   void set_common(ShaderProgram& p, const Frame& frame);
   void set_lighting(ShaderProgram& p, const Frame& frame, const Camera& camera);
   void draw_mesh(const RenderSettings& settings, const RenderMesh& mesh, const MeshBuffers& buffers,
@@ -259,8 +276,10 @@ Frame Renderer::Impl::upload(const RenderSettings& settings, const RenderScene& 
   }
   const DepthRange range = depth_range(camera, visible.lo, visible.hi);
   const double aspect = static_cast<double>(settings.width) / settings.height;
-  frame.view_projection =
-      (camera.projection_matrix(aspect, range.near_plane, range.far_plane) * camera.view_matrix()).cast<float>();
+  const Eigen::Matrix4d projection = camera.projection_matrix(aspect, range.near_plane, range.far_plane);
+  frame.projection = projection.cast<float>();
+  frame.view_projection = (projection * camera.view_matrix()).cast<float>();
+  frame.occlusion = occlusion != nullptr && has_meshes;
   return frame;
 }
 
@@ -289,6 +308,22 @@ void Renderer::Impl::shadow_pass(const RenderScene& scene, const Frame& frame) {
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
+void Renderer::Impl::occlusion_pass(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
+  // What the lighting passes see opaque: the opaque meshes and the floor.
+  occlusion->begin_depth();
+  depth_program.use();
+  set(depth_program, "u_view_projection", frame.view_projection);
+  glCullFace(GL_BACK);
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    if (scene.meshes[i].opacity < kOpaque) continue;
+    set_culling(meshes[i].closed());
+    meshes[i].draw();
+  }
+  set_culling(false);
+  if (scene.ground && settings.ground) ground.draw(frame.ground);
+  occlusion->resolve(frame.projection, static_cast<float>(kOcclusionReach * frame.radius));
+}
+
 void Renderer::Impl::set_common(ShaderProgram& p, const Frame& frame) {
   p.use();
   set(p, "u_view_projection", frame.view_projection);
@@ -297,6 +332,12 @@ void Renderer::Impl::set_common(ShaderProgram& p, const Frame& frame) {
   set(p, "u_shadow_map", static_cast<int>(kShadowUnit - GL_TEXTURE0));
   const float texel = 1.0f / static_cast<float>(shadow_map.size());
   glUniform2f(p.location("u_shadow_texel"), texel, texel);
+  if (occlusion) {
+    set(p, "u_ao", static_cast<int>(kOcclusionUnit - GL_TEXTURE0));
+    glUniform2f(p.location("u_frame_size"), static_cast<float>(2 * occlusion->width()),
+                static_cast<float>(2 * occlusion->height()));
+    set(p, "u_ao_weight", frame.occlusion ? 1.0f : 0.0f);
+  }
 }
 
 void Renderer::Impl::set_lighting(ShaderProgram& p, const Frame& frame, const Camera& camera) {
@@ -435,6 +476,11 @@ void Renderer::Impl::draw_transparent(const RenderSettings& settings, const Rend
   auto depth_of = [&](size_t i) { return (0.5 * (mesh_bounds[i].lo + mesh_bounds[i].hi) - camera.eye).dot(forward); };
   std::stable_sort(transparent_order.begin(), transparent_order.end(),
                    [&](size_t a, size_t b) { return depth_of(a) > depth_of(b); });
+  // They are not in the occlusion's depth, which shows what lies behind them.
+  for (ShaderProgram* program : {programs.plain, programs.textured}) {
+    program->use();
+    set(*program, "u_ao_weight", 0.0f);
+  }
   glEnable(GL_BLEND);
   glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied colour
   glDepthMask(GL_FALSE);
@@ -459,6 +505,7 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   glDepthFunc(GL_LESS);  // a back face on a silhouette must not replace the front face it meets
   glDepthMask(GL_TRUE);
   if (frame.shadows) shadow_pass(scene, frame);
+  if (frame.occlusion) occlusion_pass(settings, scene, frame);
 
   target.bind_for_drawing();
   glEnable(GL_FRAMEBUFFER_SRGB);  // linear in the shaders, sRGB bytes in memory
@@ -469,6 +516,7 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   }
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
   shadow_map.bind_texture(kShadowUnit);
+  if (occlusion) occlusion->bind_texture(kOcclusionUnit);
   const MeshPrograms programs{&mesh_programs[frame.shadows ? 1 : 0], &mesh_programs[frame.shadows ? 3 : 2]};
   set_lighting(*programs.plain, frame, camera);
   if (std::any_of(meshes.begin(), meshes.end(), [](const MeshBuffers& m) { return !m.groups().empty(); }))

@@ -21,6 +21,8 @@ struct RenderSettings {
   int height = 720;
   int msaa = 4;  // samples per pixel: 0 (off), 2 or 4
   bool shadows = true;
+  // Screen-space ambient occlusion (ambient_occlusion.h): creases and contacts darken.
+  bool ambient_occlusion = false;
   Rgb background = {0x1d / 255.0f, 0x21 / 255.0f, 0x27 / 255.0f};  // sRGB #1d2127
   bool transparent_background = false;  // alpha 0 where nothing (not even the floor) is drawn
   bool wireframe = false;               // dark triangle edges over the shaded meshes

@@ -24,6 +24,21 @@ float key_visibility(vec4 shadow_coord) {
 }
 )";
 
+// Shared by meshes and the ground: the ambient occlusion at this pixel
+// (render/ambient_occlusion.h), half the frame's size, read bilinear.
+const char* const kAmbientOcclusion = R"(
+#ifdef AMBIENT_OCCLUSION
+uniform sampler2D u_ao;
+uniform vec2 u_frame_size;  // pixels
+uniform float u_ao_weight;  // 1, or 0 where the surface is not in the occlusion's depth (transparent)
+float ambient_visibility() {
+  return mix(1.0, texture(u_ao, gl_FragCoord.xy / u_frame_size).r, u_ao_weight);
+}
+#else
+float ambient_visibility() { return 1.0; }
+#endif
+)";
+
 // Meshes: three-point lighting (key, fill, rim) with a hemisphere ambient
 // and a Blinn-Phong highlight of the key.
 const char* const kStudio = R"(
@@ -41,16 +56,18 @@ uniform float u_shininess;
 uniform float u_highlight;
 const float kSpecular = 0.25;
 
-// Radiance leaving a surface (linear) lit by the rig; n unit, facing the viewer.
-vec3 studio_light(vec3 albedo, vec3 n, vec3 world, float visibility) {
+// Radiance leaving a surface (linear) lit by the rig; n unit, facing the
+// viewer; `visibility` of the key light, `open` of the broad fill and ambient.
+vec3 studio_light(vec3 albedo, vec3 n, vec3 world, float visibility, float open) {
   float key = max(dot(n, u_key_dir), 0.0) * visibility;
   float fill = max(dot(n, u_fill_dir), 0.0);
   float rim = max(dot(n, u_rim_dir), 0.0);
   vec3 ambient = mix(u_ground_ambient, u_sky_ambient, 0.5 + 0.5 * n.y);
-  vec3 color = (albedo * (1.0 - u_metallic)) * (u_key_color * key + u_fill_color * fill + u_rim_color * rim + ambient);
+  vec3 color = (albedo * (1.0 - u_metallic)) *
+               (u_key_color * key + (u_fill_color * fill + ambient) * open + u_rim_color * rim);
   vec3 v = normalize(u_eye - world);
   vec3 mirrored = reflect(-v, n);
-  color += (u_metallic * albedo) * mix(u_ground_ambient, u_sky_ambient, 0.5 + 0.5 * mirrored.y);
+  color += (u_metallic * albedo * open) * mix(u_ground_ambient, u_sky_ambient, 0.5 + 0.5 * mirrored.y);
   vec3 h = normalize(u_key_dir + v);
   float highlight = pow(max(dot(n, h), 0.0), u_shininess) * u_highlight * float(key > 0.0);
   return color + (mix(vec3(kSpecular), albedo, u_metallic) * highlight * visibility) * u_key_color;
@@ -61,8 +78,9 @@ const char* const kHeader = "#version 330 core\n";
 
 // llvmpipe runs both sides of a branch on a uniform, texture taps included,
 // so shadowed and unshadowed programs are compiled separately.
-std::string fragment_header(bool shadows) {
-  return std::string(kHeader) + (shadows ? "#define SHADOWS 1\n" : "");
+std::string fragment_header(bool shadows, bool occlusion = false) {
+  return std::string(kHeader) + (shadows ? "#define SHADOWS 1\n" : "") +
+         (occlusion ? "#define AMBIENT_OCCLUSION 1\n" : "");
 }
 
 }  // namespace
@@ -92,8 +110,9 @@ void main() {
 )";
 }
 
-std::string mesh_fragment(bool shadows, bool textured) {
-  return fragment_header(shadows) + (textured ? "#define TEXTURED 1\n" : "") + kShadow + kStudio + R"(
+std::string mesh_fragment(bool shadows, bool textured, bool occlusion) {
+  return fragment_header(shadows, occlusion) + (textured ? "#define TEXTURED 1\n" : "") + kShadow +
+         kAmbientOcclusion + kStudio + R"(
 in vec3 v_world;
 in vec3 v_normal;
 in vec4 v_shadow;
@@ -113,7 +132,7 @@ void main() {
 #ifdef TEXTURED
   albedo *= texture(u_texture, vec2(v_uv.x, 1.0 - v_uv.y)).rgb;
 #endif
-  vec3 color = studio_light(albedo, n, v_world, key_visibility(v_shadow));
+  vec3 color = studio_light(albedo, n, v_world, key_visibility(v_shadow), ambient_visibility());
   o_color = vec4(color * u_opacity, u_opacity);
 }
 )";
@@ -135,8 +154,8 @@ void main() {
 )";
 }
 
-std::string ground_fragment(bool shadows, bool grid) {
-  return fragment_header(shadows) + (grid ? "#define GRID 1\n" : "") + kShadow + R"(
+std::string ground_fragment(bool shadows, bool grid, bool occlusion) {
+  return fragment_header(shadows, occlusion) + (grid ? "#define GRID 1\n" : "") + kShadow + kAmbientOcclusion + R"(
 in vec3 v_world;
 in vec4 v_shadow;
 uniform vec3 u_albedo;       // linear ground colour
@@ -170,7 +189,7 @@ void main() {
   float line = max(0.4 * minor, major) * (1.0 - smoothstep(0.2 * u_fade.y, 0.8 * u_fade.y, r));
   albedo = mix(albedo, u_line_albedo, line);
 #endif
-  vec3 color = albedo * (u_other_light + u_key_light * key_visibility(v_shadow));
+  vec3 color = albedo * (u_other_light * ambient_visibility() + u_key_light * key_visibility(v_shadow));
   // Composited over the clear colour here rather than by GL blending, which
   // on llvmpipe costs as much again as this whole shader.
   float alpha = 1.0 - smoothstep(u_fade.x, u_fade.y, r);
@@ -195,6 +214,82 @@ void main() {
   float fade = 1.0 - smoothstep(u_fade.x, u_fade.y, r);
   float shadow = u_shadow_strength * (1.0 - key_visibility(v_shadow)) * fade;
   o_color = vec4(0.0, 0.0, 0.0, shadow);
+}
+)";
+}
+
+std::string fullscreen_vertex() {
+  return std::string(kHeader) + R"(
+// One triangle whose corners (-1,-1), (3,-1), (-1,3) cover the viewport.
+void main() {
+  vec2 corner = vec2((gl_VertexID << 1) & 2, gl_VertexID & 2);
+  gl_Position = vec4(2.0 * corner - 1.0, 0.0, 1.0);
+}
+)";
+}
+
+std::string occlusion_fragment() {
+  return std::string(kHeader) + R"(
+uniform sampler2D u_depth;          // window depth, this pass's size
+uniform mat4 u_projection;          // view to clip
+uniform mat4 u_inverse_projection;  // clip to view
+uniform float u_radius;             // metres the hemisphere reaches
+uniform vec2 u_size;                // pixels of this pass
+out vec4 o_color;                   // R: the share of the hemisphere that is open
+
+// Points in the unit hemisphere (z along the normal), more of them near the
+// surface, where creases and contacts are.
+const vec3 kPoints[12] = vec3[](
+  vec3(0.10, 0.02, 0.06), vec3(-0.05, 0.12, 0.10), vec3(-0.17, -0.08, 0.06), vec3(0.06, -0.24, 0.14),
+  vec3(0.32, 0.10, 0.12), vec3(-0.12, 0.36, 0.20), vec3(-0.45, -0.05, 0.22), vec3(0.05, -0.52, 0.20),
+  vec3(0.50, 0.36, 0.30), vec3(-0.40, 0.56, 0.35), vec3(-0.62, -0.48, 0.30), vec3(0.30, -0.70, 0.45));
+// A 4x4 ordered-dither permutation: neighbouring pixels turn the points far apart.
+const float kTurn[16] = float[](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
+
+float view_depth(float window_depth) {
+  // z_ndc = (A z + B) / -z, solved for the view-space z (negative ahead).
+  return -u_projection[3][2] / ((2.0 * window_depth - 1.0) + u_projection[2][2]);
+}
+
+void main() {
+  vec2 uv = gl_FragCoord.xy / u_size;
+  float depth = texture(u_depth, uv).r;
+  vec4 h = u_inverse_projection * vec4(2.0 * vec3(uv, depth) - 1.0, 1.0);
+  vec3 p = h.xyz / h.w;
+  vec3 n = normalize(cross(dFdx(p), dFdy(p)));
+  ivec2 cell = ivec2(gl_FragCoord.xy) & 3;
+  float turn = (kTurn[cell.x + 4 * cell.y] + 0.5) * (6.2831853 / 16.0);
+  vec3 r = vec3(cos(turn), sin(turn), 0.0);
+  vec3 t = normalize(r - n * dot(r, n) + vec3(0.0, 0.0, 1e-4));
+  vec3 b = cross(n, t);
+  float closed = 0.0;
+  for (int i = 0; i < 12; ++i) {
+    vec3 q = p + u_radius * (kPoints[i].x * t + kPoints[i].y * b + kPoints[i].z * n);
+    vec4 c = u_projection * vec4(q, 1.0);
+    float scene_z = view_depth(texture(u_depth, 0.5 * c.xy / c.w + 0.5).r);
+    // Blocked if the surface seen there is in front of the point, unless it
+    // is far in front (another object across a depth gap).
+    float near_enough = smoothstep(0.0, 1.0, u_radius / max(abs(p.z - scene_z), 1e-6));
+    closed += (scene_z > q.z + 0.02 * u_radius ? 1.0 : 0.0) * near_enough;
+  }
+  o_color = vec4(depth < 1.0 ? 1.0 - closed / 12.0 : 1.0);
+}
+)";
+}
+
+std::string box_blur_fragment() {
+  return std::string(kHeader) + R"(
+uniform sampler2D u_source;  // bilinear
+uniform vec2 u_texel;        // one texel in texture coordinates
+out vec4 o_color;
+// The mean of the 4x4 texels around this one: four bilinear taps, each on
+// the corner between four texels.
+void main() {
+  vec2 uv = gl_FragCoord.xy * u_texel;
+  o_color = vec4(0.25 * (texture(u_source, uv + vec2(-0.5, -0.5) * u_texel).r +
+                         texture(u_source, uv + vec2(1.5, -0.5) * u_texel).r +
+                         texture(u_source, uv + vec2(-0.5, 1.5) * u_texel).r +
+                         texture(u_source, uv + vec2(1.5, 1.5) * u_texel).r));
 }
 )";
 }

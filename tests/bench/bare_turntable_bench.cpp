@@ -117,12 +117,13 @@ double recoil_seconds(const fs::path& mesh_file, const std::string& flags, const
 
 void bench_bare_turntable() {
   BenchTable table("turntable against a bare OSMesa program, 36 frames at 1920x1080, MSAA 4, PNG level 1",
-                   {"mesh", "triangles", "bare s", "recoil, shadows s", "x bare", "recoil, all off s", "x bare"});
+                   {"mesh", "triangles", "bare s", "recoil, shadows + AO s", "x bare", "recoil, shadows s", "x bare",
+                    "recoil, all off s", "x bare"});
   table.note(
       "The bare program (this bench, one process) uploads the mesh once and per frame draws it with one lit "
       "shader into a 4x MSAA target, resolves, reads back and PNG-encodes at level 1, one frame after another. "
       "recoil is `recoil turntable` as a user runs it (its own run.json, less the world's build): with shadows and "
-      "the ground, and with `--no-shadows --no-ground`.");
+      "the ground and `--ao`, with shadows and the ground, and with `--no-shadows --no-ground`.");
   const fs::path dir = fs::temp_directory_path() / ("recoil_bench_bare_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   struct Subject {
@@ -138,10 +139,12 @@ void bench_bare_turntable() {
   subjects.push_back({"torus", torus, sim::import_surface(torus)});
   for (const Subject& s : subjects) {
     const double bare = bare_seconds(s.mesh);
+    const double occlusion = recoil_seconds(s.file, "--ao", dir / (std::string(s.name) + "_ao"));
     const double shadows = recoil_seconds(s.file, "", dir / (std::string(s.name) + "_shadows"));
     const double off = recoil_seconds(s.file, "--no-shadows --no-ground", dir / (std::string(s.name) + "_off"));
-    table.add_row({s.name, std::to_string(s.mesh.num_triangles()), fixed(bare, 2), fixed(shadows, 2),
-                   fixed(shadows / bare, 2), fixed(off, 2), fixed(off / bare, 2)});
+    table.add_row({s.name, std::to_string(s.mesh.num_triangles()), fixed(bare, 2), fixed(occlusion, 2),
+                   fixed(occlusion / bare, 2), fixed(shadows, 2), fixed(shadows / bare, 2), fixed(off, 2),
+                   fixed(off / bare, 2)});
   }
   std::error_code ec;
   fs::remove_all(dir, ec);
