@@ -1,6 +1,5 @@
 #include "render/ambient_occlusion.h"
 
-#include <Eigen/LU>
 #include <algorithm>
 #include <string>
 
@@ -39,8 +38,8 @@ gl::Framebuffer make_target(GLenum attachment, const gl::Texture& texture) {
 }  // namespace
 
 AmbientOcclusion::AmbientOcclusion(int frame_width, int frame_height)
-    : m_width(std::max(1, (frame_width + 1) / 2)),
-      m_height(std::max(1, (frame_height + 1) / 2)),
+    : m_width(std::max(1, (frame_width + kScale - 1) / kScale)),
+      m_height(std::max(1, (frame_height + kScale - 1) / kScale)),
       m_depth(make_texture(m_width, m_height, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, GL_NEAREST)),
       m_raw(make_texture(m_width, m_height, GL_R8, GL_RED, GL_UNSIGNED_BYTE, GL_LINEAR)),
       m_blurred(make_texture(m_width, m_height, GL_R8, GL_RED, GL_UNSIGNED_BYTE, GL_LINEAR)),
@@ -51,10 +50,18 @@ AmbientOcclusion::AmbientOcclusion(int frame_width, int frame_height)
       m_occlusion("ambient occlusion", shaders::fullscreen_vertex(), shaders::occlusion_fragment()),
       m_blur("ambient occlusion blur", shaders::fullscreen_vertex(), shaders::box_blur_fragment()) {}
 
-void AmbientOcclusion::begin_depth() {
-  glBindFramebuffer(GL_FRAMEBUFFER, m_depth_target.get());
+void AmbientOcclusion::begin_depth(const Region& region) {
   glViewport(0, 0, m_width, m_height);
+  glDisable(GL_SCISSOR_TEST);
+  glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
+  for (const gl::Framebuffer* target : {&m_raw_target, &m_blurred_target}) {
+    glBindFramebuffer(GL_FRAMEBUFFER, target->get());
+    glClear(GL_COLOR_BUFFER_BIT);
+  }
+  glBindFramebuffer(GL_FRAMEBUFFER, m_depth_target.get());
   glClear(GL_DEPTH_BUFFER_BIT);
+  glEnable(GL_SCISSOR_TEST);
+  glScissor(region.x0, region.y0, std::max(region.x1 - region.x0, 0), std::max(region.y1 - region.y0, 0));
 }
 
 void AmbientOcclusion::resolve(const Eigen::Matrix4f& projection, float radius) {
@@ -67,8 +74,6 @@ void AmbientOcclusion::resolve(const Eigen::Matrix4f& projection, float radius) 
   glBindTexture(GL_TEXTURE_2D, m_depth.get());
   glUniform1i(m_occlusion.location("u_depth"), 0);
   glUniformMatrix4fv(m_occlusion.location("u_projection"), 1, GL_FALSE, projection.data());
-  const Eigen::Matrix4f inverse = projection.inverse();
-  glUniformMatrix4fv(m_occlusion.location("u_inverse_projection"), 1, GL_FALSE, inverse.data());
   glUniform1f(m_occlusion.location("u_radius"), radius);
   glUniform2f(m_occlusion.location("u_size"), static_cast<float>(m_width), static_cast<float>(m_height));
   glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -82,6 +87,7 @@ void AmbientOcclusion::resolve(const Eigen::Matrix4f& projection, float radius) 
 
   glBindVertexArray(0);
   glEnable(GL_DEPTH_TEST);
+  glDisable(GL_SCISSOR_TEST);
 }
 
 void AmbientOcclusion::bind_texture(GLenum unit) const {

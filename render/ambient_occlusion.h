@@ -1,11 +1,13 @@
 #pragma once
 // AmbientOcclusion: screen-space ambient occlusion at half the frame's size.
 // The opaque meshes and the floor are drawn depth-only into a texture; a
-// full-screen pass tests 12 fixed points of the hemisphere above each pixel's
-// surface against that depth; a 4x4 box blur (four bilinear taps) evens out
-// the 4x4 rotation pattern of those points. The lighting passes then read one
-// value per pixel, which dims the ambient and fill light in creases and
-// where a body meets the floor.
+// full-screen pass looks up the surface at 12 taps on a spiral around each
+// pixel, out to a reach in metres, and each surface point found closes the
+// pixel's hemisphere by how far it rises above the pixel's tangent plane (so
+// a plane closes nothing); a 4x4 box blur (four bilinear taps) evens out the
+// 4x4 pattern the spiral is turned by. The lighting passes then read one value
+// per pixel, which dims the diffuse light in creases and where a body meets
+// the floor. Only the part of the frame near the meshes is computed.
 #include <Eigen/Core>
 
 #include "render/gl_objects.h"
@@ -15,12 +17,22 @@ namespace recoil::render {
 
 class AmbientOcclusion {
  public:
+  // Frame pixels per occlusion pixel, each way.
+  static constexpr int kScale = 2;
+
   AmbientOcclusion(int frame_width, int frame_height);
 
-  // Binds the depth target, viewport set and depth cleared, for depth-only draws.
-  void begin_depth();
-  // Turns the depth drawn into occlusion. `projection`: the frame's view to
-  // clip (4 by 4); `radius`: how far the hemisphere reaches, metres.
+  // Pixels of this pass's size, [x0, x1) by [y0, y1), rows from the bottom.
+  struct Region {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+  };
+
+  // Binds the depth target, viewport set and depth cleared, for depth-only
+  // draws limited to `region`; outside it everything stays open (1).
+  void begin_depth(const Region& region);
+  // Turns the depth drawn into occlusion, in the region only. `projection`:
+  // the frame's view to clip (4 by 4, a symmetric perspective); `radius`: how
+  // far the occlusion reaches, metres.
   void resolve(const Eigen::Matrix4f& projection, float radius);
   // The visibility texture (R: 1 open, 0 enclosed), bilinear.
   void bind_texture(GLenum unit) const;

@@ -22,31 +22,40 @@ GroundLayout ground_layout(double center_x, double center_z, double radius, doub
   layout.fade_end = 6.0 * radius;
   // A power of ten near the scene's size: a 1 m object gets 1 m major and 10 cm minor lines.
   layout.grid_spacing = std::pow(10.0, std::floor(std::log10(2.0 * radius)));
-  layout.cell_x0 = center_x - layout.fade_end;
-  layout.cell_x1 = center_x + layout.fade_end;
-  layout.cell_z0 = center_z - layout.fade_end;
-  layout.cell_z1 = center_z + layout.fade_end;
+  layout.cell = {center_x - layout.fade_end, center_x + layout.fade_end, center_z - layout.fade_end,
+                 center_z + layout.fade_end};
   return layout;
 }
 
-void shadow_cell(GroundLayout& layout, const Eigen::Vector3d& center, double radius, const Eigen::Vector3d& to_light,
-                 double reach) {
+FloorRect FloorRect::united(const FloorRect& other) const {
+  return {std::min(x0, other.x0), std::max(x1, other.x1), std::min(z0, other.z0), std::max(z1, other.z1)};
+}
+
+std::optional<FloorRect> shadow_reach(double height, const Eigen::Vector3d& center, double radius,
+                                      const Eigen::Vector3d& to_light, double reach) {
   // A floor point is shadowed only if the ray from it to the light meets the
   // sphere: the floor's shadow of the sphere is an ellipse around the centre's
   // projection along the light, of half axes r and r / sin(elevation), so a
   // square of half size r / sin(elevation) holds it.
   const double sine = to_light.y();
-  if (!(sine > 0.05)) return;  // grazing light: shadows stretch across the floor
-  const double drop = (center.y() - layout.height) / sine;
+  if (!(sine > 0.05)) return std::nullopt;
+  const double drop = (center.y() - height) / sine;
   const double x = center.x() - to_light.x() * drop;
   const double z = center.z() - to_light.z() * drop;
   const double half = (radius + reach) / sine;
+  return FloorRect{x - half, x + half, z - half, z + half};
+}
+
+FloorRect near_reach(const Eigen::Vector3d& center, double radius, double reach) {
+  const double half = radius + reach;
+  return {center.x() - half, center.x() + half, center.z() - half, center.z() + half};
+}
+
+void set_cell(GroundLayout& layout, const FloorRect& cell) {
   const double x0 = layout.center_x - layout.fade_end, x1 = layout.center_x + layout.fade_end;
   const double z0 = layout.center_z - layout.fade_end, z1 = layout.center_z + layout.fade_end;
-  layout.cell_x0 = std::clamp(x - half, x0, x1);
-  layout.cell_x1 = std::clamp(x + half, x0, x1);
-  layout.cell_z0 = std::clamp(z - half, z0, z1);
-  layout.cell_z1 = std::clamp(z + half, z0, z1);
+  layout.cell = {std::clamp(cell.x0, x0, x1), std::clamp(cell.x1, x0, x1), std::clamp(cell.z0, z0, z1),
+                 std::clamp(cell.z1, z0, z1)};
 }
 
 Ground::Ground()
@@ -78,15 +87,13 @@ void Ground::bind(const GroundLayout& layout) {
   glBindVertexArray(m_vertex_array.get());
   const bool same = m_has_upload && layout.center_x == m_uploaded.center_x &&
                     layout.center_z == m_uploaded.center_z && layout.height == m_uploaded.height &&
-                    layout.fade_end == m_uploaded.fade_end && layout.cell_x0 == m_uploaded.cell_x0 &&
-                    layout.cell_x1 == m_uploaded.cell_x1 && layout.cell_z0 == m_uploaded.cell_z0 &&
-                    layout.cell_z1 == m_uploaded.cell_z1;
+                    layout.fade_end == m_uploaded.fade_end && layout.cell == m_uploaded.cell;
   if (same) return;
   const std::array<float, 4> xs = {static_cast<float>(layout.center_x - layout.fade_end),
-                                   static_cast<float>(layout.cell_x0), static_cast<float>(layout.cell_x1),
+                                   static_cast<float>(layout.cell.x0), static_cast<float>(layout.cell.x1),
                                    static_cast<float>(layout.center_x + layout.fade_end)};
   const std::array<float, 4> zs = {static_cast<float>(layout.center_z - layout.fade_end),
-                                   static_cast<float>(layout.cell_z0), static_cast<float>(layout.cell_z1),
+                                   static_cast<float>(layout.cell.z0), static_cast<float>(layout.cell.z1),
                                    static_cast<float>(layout.center_z + layout.fade_end)};
   std::array<float, 48> corners{};
   for (std::size_t j = 0; j < 4; ++j) {

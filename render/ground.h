@@ -2,12 +2,21 @@
 // The studio floor: a square at y = height centred under the scene, sized so
 // its fade-out ring (drawn by the ground shader) ends inside it. The square is
 // cut into a 3 by 3 grid whose middle cell holds every shadow the key light can
-// cast on it, so the shadow lookups run on that cell only.
+// cast on it and every place the ambient occlusion can darken, so the lookups
+// for those run on that cell only.
 #include <Eigen/Core>
+#include <optional>
 
 #include "render/gl_objects.h"
 
 namespace recoil::render {
+
+// A rectangle of the floor: world x in [x0, x1], z in [z0, z1] (metres).
+struct FloorRect {
+  double x0 = 0.0, x1 = 0.0, z0 = 0.0, z1 = 0.0;
+  FloorRect united(const FloorRect& other) const;
+  bool operator==(const FloorRect& other) const = default;
+};
 
 struct GroundLayout {
   double center_x = 0.0;   // metres, world
@@ -16,19 +25,23 @@ struct GroundLayout {
   double fade_start = 1.0; // radius where the floor starts fading into the background
   double fade_end = 3.0;   // radius where it is gone; also the square's half size
   double grid_spacing = 1.0;  // major lines; minor lines every tenth
-  // The cell that can be in shadow, inside the square (metres, world); the
-  // whole square until shadow_cell() narrows it.
-  double cell_x0 = 0.0, cell_x1 = 0.0, cell_z0 = 0.0, cell_z1 = 0.0;
+  // The middle cell, inside the square; the whole square until set_cell().
+  FloorRect cell;
 };
 
 // Floor layout for a scene whose meshes fit in the sphere (center, radius).
 GroundLayout ground_layout(double center_x, double center_z, double radius, double height);
 
-// Narrows the layout's cell to the floor a sphere (center, radius) can shadow
-// under a directional light (to_light, unit), grown by `reach` metres of the
-// lookups' own spread. A light at or below the horizon keeps the whole square.
-void shadow_cell(GroundLayout& layout, const Eigen::Vector3d& center, double radius, const Eigen::Vector3d& to_light,
-                 double reach);
+// The floor (y = height) a sphere (center, radius) can shadow under a
+// directional light (to_light, unit), grown by `reach` metres of the lookups'
+// own spread; none where the light is so low that the shadow stretches across
+// the whole floor.
+std::optional<FloorRect> shadow_reach(double height, const Eigen::Vector3d& center, double radius,
+                                      const Eigen::Vector3d& to_light, double reach);
+// The floor within `reach` metres of the sphere (center, radius), seen from above.
+FloorRect near_reach(const Eigen::Vector3d& center, double radius, double reach);
+// Sets the middle cell to `cell` clamped into the square.
+void set_cell(GroundLayout& layout, const FloorRect& cell);
 
 class Ground {
  public:

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -115,15 +116,16 @@ std::string hex(unsigned value) {
   return text;
 }
 
-// The programs' ambient occlusion is the renderer's, fixed by its settings.
+// The meshes' ambient occlusion is the renderer's, fixed by its settings.
 ShaderProgram mesh_program(bool shadows, bool textured, const RenderSettings& s) {
   const std::string name = std::string("mesh") + (shadows ? "+shadow" : "") + (textured ? "+texture" : "");
   return ShaderProgram(name, shaders::mesh_vertex(), shaders::mesh_fragment(shadows, textured, s.ambient_occlusion));
 }
 
-ShaderProgram ground_program(bool shadows, bool grid, const RenderSettings& s) {
-  const std::string name = std::string("ground") + (grid ? "+grid" : "") + (shadows ? "+shadow" : "");
-  return ShaderProgram(name, shaders::ground_vertex(), shaders::ground_fragment(shadows, grid, s.ambient_occlusion));
+ShaderProgram ground_program(bool shadows, bool grid, bool occlusion) {
+  const std::string name =
+      std::string("ground") + (grid ? "+grid" : "") + (shadows ? "+shadow" : "") + (occlusion ? "+occlusion" : "");
+  return ShaderProgram(name, shaders::ground_vertex(), shaders::ground_fragment(shadows, grid, occlusion));
 }
 
 void set_culling(bool cull) {
@@ -175,7 +177,8 @@ struct Renderer::Impl {
   std::unique_ptr<AmbientOcclusion> occlusion;  // null when the settings have none
   // Index: shadows + 2 * textured (the key light's shadow lookups, a base-colour map).
   std::array<ShaderProgram, 4> mesh_programs;
-  std::array<ShaderProgram, 4> ground_programs;  // index: shadows + 2 * grid
+  std::array<ShaderProgram, 4> ground_programs;  // the floor's cell; index: shadows + 2 * grid
+  std::array<ShaderProgram, 2> bare_ground_programs;  // around the cell, no lookups; index: grid
   ShaderProgram catcher_program;  // the ground over a transparent background
   ShaderProgram clear_floor_program;  // ... where it can catch no shadow
   ShaderProgram depth_program;
@@ -195,8 +198,9 @@ struct Renderer::Impl {
         occlusion(s.ambient_occlusion ? std::make_unique<AmbientOcclusion>(s.width, s.height) : nullptr),
         mesh_programs{mesh_program(false, false, s), mesh_program(true, false, s), mesh_program(false, true, s),
                       mesh_program(true, true, s)},
-        ground_programs{ground_program(false, false, s), ground_program(true, false, s),
-                        ground_program(false, true, s), ground_program(true, true, s)},
+        ground_programs{ground_program(false, false, s.ambient_occlusion), ground_program(true, false, s.ambient_occlusion),
+                        ground_program(false, true, s.ambient_occlusion), ground_program(true, true, s.ambient_occlusion)},
+        bare_ground_programs{ground_program(false, false, false), ground_program(false, true, false)},
         catcher_program("shadow catcher", shaders::ground_vertex(), shaders::shadow_catcher_fragment()),
         clear_floor_program("clear floor", shaders::ground_vertex(), shaders::flat_fragment()),
         depth_program("depth", shaders::depth_vertex(), shaders::depth_fragment()),
@@ -308,9 +312,37 @@ void Renderer::Impl::shadow_pass(const RenderScene& scene, const Frame& frame) {
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
+double occlusion_reach(const Frame& frame) { return kOcclusionReach * frame.radius; }
+
+// Where the occlusion can be other than open, in its pass's pixels: the
+// meshes' sphere, grown by twice the reach (a point's tests reach that far),
+// boxed and projected, plus the blur's two pixels; all of it when a corner of
+// that box is behind the eye.
+AmbientOcclusion::Region occlusion_region(const Frame& frame, int width, int height) {
+  const AmbientOcclusion::Region whole{0, 0, width, height};
+  const double half = frame.radius + 2.0 * occlusion_reach(frame);
+  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
+  for (int corner = 0; corner < 8; ++corner) {
+    const Eigen::Vector3d p = frame.center + half * Eigen::Vector3d(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1,
+                                                                    corner & 4 ? 1 : -1);
+    const Eigen::Vector4d clip = frame.view_projection.cast<double>() * Eigen::Vector4d(p.x(), p.y(), p.z(), 1.0);
+    if (!(clip.w() > 1e-9)) return whole;
+    const Eigen::Vector2d ndc = clip.head<2>() / clip.w();
+    lo = lo.cwiseMin(ndc);
+    hi = hi.cwiseMax(ndc);
+  }
+  auto pixel = [](double ndc, int size) {
+    return std::clamp((0.5 * std::clamp(ndc, -2.0, 2.0) + 0.5) * size, 0.0, static_cast<double>(size));
+  };
+  return {std::max(static_cast<int>(std::floor(pixel(lo.x(), width))) - 2, 0),
+          std::max(static_cast<int>(std::floor(pixel(lo.y(), height))) - 2, 0),
+          std::min(static_cast<int>(std::ceil(pixel(hi.x(), width))) + 2, width),
+          std::min(static_cast<int>(std::ceil(pixel(hi.y(), height))) + 2, height)};
+}
+
 void Renderer::Impl::occlusion_pass(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
   // What the lighting passes see opaque: the opaque meshes and the floor.
-  occlusion->begin_depth();
+  occlusion->begin_depth(occlusion_region(frame, occlusion->width(), occlusion->height()));
   depth_program.use();
   set(depth_program, "u_view_projection", frame.view_projection);
   glCullFace(GL_BACK);
@@ -321,7 +353,7 @@ void Renderer::Impl::occlusion_pass(const RenderSettings& settings, const Render
   }
   set_culling(false);
   if (scene.ground && settings.ground) ground.draw(frame.ground);
-  occlusion->resolve(frame.projection, static_cast<float>(kOcclusionReach * frame.radius));
+  occlusion->resolve(frame.projection, static_cast<float>(occlusion_reach(frame)));
 }
 
 void Renderer::Impl::set_common(ShaderProgram& p, const Frame& frame) {
@@ -334,8 +366,8 @@ void Renderer::Impl::set_common(ShaderProgram& p, const Frame& frame) {
   glUniform2f(p.location("u_shadow_texel"), texel, texel);
   if (occlusion) {
     set(p, "u_ao", static_cast<int>(kOcclusionUnit - GL_TEXTURE0));
-    glUniform2f(p.location("u_frame_size"), static_cast<float>(2 * occlusion->width()),
-                static_cast<float>(2 * occlusion->height()));
+    glUniform2f(p.location("u_frame_size"), static_cast<float>(AmbientOcclusion::kScale * occlusion->width()),
+                static_cast<float>(AmbientOcclusion::kScale * occlusion->height()));
     set(p, "u_ao_weight", frame.occlusion ? 1.0f : 0.0f);
   }
 }
@@ -399,12 +431,23 @@ void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh&
 }
 
 void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
-  // Shadow lookups run on the floor's cell that can be in shadow; around it
-  // the key light is unblocked, which the lookups would return anyway.
+  // Shadow and occlusion lookups run on the floor's cell that a shadow or
+  // the occlusion can reach; around it they would return "open" anyway.
   GroundLayout g = frame.ground;
-  if (frame.shadows) {
-    shadow_cell(g, frame.center, frame.radius, frame.lights.key.to_light,
-                kShadowReachTexels * shadow_map.texel_world());
+  const bool lookups = frame.shadows || frame.occlusion;
+  if (lookups) {
+    std::optional<FloorRect> cell = frame.occlusion ? std::optional(near_reach(frame.center, frame.radius,
+                                                                                occlusion_reach(frame)))
+                                                    : std::nullopt;
+    bool whole = false;
+    if (frame.shadows) {
+      const std::optional<FloorRect> shadow = shadow_reach(g.height, frame.center, frame.radius,
+                                                           frame.lights.key.to_light,
+                                                           kShadowReachTexels * shadow_map.texel_world());
+      whole = !shadow;
+      if (shadow) cell = cell ? cell->united(*shadow) : *shadow;
+    }
+    if (!whole) set_cell(g, *cell);
   }
   if (settings.transparent_background) {
     draw_shadow_catcher(frame, g);
@@ -427,14 +470,14 @@ void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderSce
     set(p, "u_spacing", static_cast<float>(g.grid_spacing));
     glUniform4f(p.location("u_background"), frame.background[0], frame.background[1], frame.background[2], 1.0f);
   };
-  ShaderProgram& lit = ground_programs[scene.grid ? 2 : 0];
-  if (frame.shadows) {
-    use(ground_programs[1 + (scene.grid ? 2 : 0)]);
+  ShaderProgram& bare = bare_ground_programs[scene.grid ? 1 : 0];
+  if (lookups) {
+    use(ground_programs[(frame.shadows ? 1 : 0) + (scene.grid ? 2 : 0)]);
     ground.draw_cell(g);
-    use(lit);
+    use(bare);
     ground.draw_surround(g);
   } else {
-    use(lit);
+    use(bare);
     ground.draw(g);
   }
 }

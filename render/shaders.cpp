@@ -57,14 +57,16 @@ uniform float u_highlight;
 const float kSpecular = 0.25;
 
 // Radiance leaving a surface (linear) lit by the rig; n unit, facing the
-// viewer; `visibility` of the key light, `open` of the broad fill and ambient.
+// viewer; `visibility`: the key light's share that is not shadowed; `open`:
+// the ambient occlusion's open share, which dims all diffuse light, as a
+// crease would in a soft-lit studio.
 vec3 studio_light(vec3 albedo, vec3 n, vec3 world, float visibility, float open) {
   float key = max(dot(n, u_key_dir), 0.0) * visibility;
   float fill = max(dot(n, u_fill_dir), 0.0);
   float rim = max(dot(n, u_rim_dir), 0.0);
   vec3 ambient = mix(u_ground_ambient, u_sky_ambient, 0.5 + 0.5 * n.y);
-  vec3 color = (albedo * (1.0 - u_metallic)) *
-               (u_key_color * key + (u_fill_color * fill + ambient) * open + u_rim_color * rim);
+  vec3 color = (albedo * (1.0 - u_metallic) * open) *
+               (u_key_color * key + u_fill_color * fill + u_rim_color * rim + ambient);
   vec3 v = normalize(u_eye - world);
   vec3 mirrored = reflect(-v, n);
   color += (u_metallic * albedo * open) * mix(u_ground_ambient, u_sky_ambient, 0.5 + 0.5 * mirrored.y);
@@ -189,7 +191,7 @@ void main() {
   float line = max(0.4 * minor, major) * (1.0 - smoothstep(0.2 * u_fade.y, 0.8 * u_fade.y, r));
   albedo = mix(albedo, u_line_albedo, line);
 #endif
-  vec3 color = albedo * (u_other_light * ambient_visibility() + u_key_light * key_visibility(v_shadow));
+  vec3 color = albedo * ambient_visibility() * (u_other_light + u_key_light * key_visibility(v_shadow));
   // Composited over the clear colour here rather than by GL blending, which
   // on llvmpipe costs as much again as this whole shader.
   float alpha = 1.0 - smoothstep(u_fade.x, u_fade.y, r);
@@ -230,49 +232,53 @@ void main() {
 
 std::string occlusion_fragment() {
   return std::string(kHeader) + R"(
-uniform sampler2D u_depth;          // window depth, this pass's size
-uniform mat4 u_projection;          // view to clip
-uniform mat4 u_inverse_projection;  // clip to view
-uniform float u_radius;             // metres the hemisphere reaches
-uniform vec2 u_size;                // pixels of this pass
-out vec4 o_color;                   // R: the share of the hemisphere that is open
+uniform sampler2D u_depth;  // window depth, this pass's size
+uniform mat4 u_projection;  // view to clip (a symmetric perspective)
+uniform float u_radius;     // metres the occlusion reaches
+uniform vec2 u_size;        // pixels of this pass
+out vec4 o_color;           // R: the share of the hemisphere that is open
 
-// Points in the unit hemisphere (z along the normal), more of them near the
-// surface, where creases and contacts are.
-const vec3 kPoints[12] = vec3[](
-  vec3(0.10, 0.02, 0.06), vec3(-0.05, 0.12, 0.10), vec3(-0.17, -0.08, 0.06), vec3(0.06, -0.24, 0.14),
-  vec3(0.32, 0.10, 0.12), vec3(-0.12, 0.36, 0.20), vec3(-0.45, -0.05, 0.22), vec3(0.05, -0.52, 0.20),
-  vec3(0.50, 0.36, 0.30), vec3(-0.40, 0.56, 0.35), vec3(-0.62, -0.48, 0.30), vec3(0.30, -0.70, 0.45));
-// A 4x4 ordered-dither permutation: neighbouring pixels turn the points far apart.
+const int kTaps = 12;
+// Tap i at (i + 0.5) / 12 of the reach, on a spiral of two and a half turns.
+const vec2 kSpiral[kTaps] = vec2[](
+  vec2(0.0331, 0.0254), vec2(-0.0478, 0.1155), vec2(-0.2066, -0.0272), vec2(-0.0381, -0.2892),
+  vec2(0.3465, -0.1435), vec2(0.2790, 0.3636), vec2(-0.3297, 0.4297), vec2(-0.5774, -0.2392),
+  vec2(0.0925, -0.7023), vec2(0.7849, -0.1033), vec2(0.3348, 0.8084), vec2(-0.7603, 0.5834));
+// A 4x4 ordered-dither permutation: neighbouring pixels turn the taps far apart.
 const float kTurn[16] = float[](0.0, 8.0, 2.0, 10.0, 12.0, 4.0, 14.0, 6.0, 3.0, 11.0, 1.0, 9.0, 15.0, 7.0, 13.0, 5.0);
 
-float view_depth(float window_depth) {
+// The view-space point seen at `texel` (its centre).
+vec3 seen_at(ivec2 texel) {
+  float window_depth = texelFetch(u_depth, texel, 0).r;
   // z_ndc = (A z + B) / -z, solved for the view-space z (negative ahead).
-  return -u_projection[3][2] / ((2.0 * window_depth - 1.0) + u_projection[2][2]);
+  float z = -u_projection[3][2] / ((2.0 * window_depth - 1.0) + u_projection[2][2]);
+  vec2 ndc = 2.0 * (vec2(texel) + 0.5) / u_size - 1.0;
+  return vec3(-z * ndc.x / u_projection[0][0], -z * ndc.y / u_projection[1][1], z);
 }
 
 void main() {
-  vec2 uv = gl_FragCoord.xy / u_size;
-  float depth = texture(u_depth, uv).r;
-  vec4 h = u_inverse_projection * vec4(2.0 * vec3(uv, depth) - 1.0, 1.0);
-  vec3 p = h.xyz / h.w;
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  float depth = texelFetch(u_depth, pixel, 0).r;
+  vec3 p = seen_at(pixel);
   vec3 n = normalize(cross(dFdx(p), dFdy(p)));
-  ivec2 cell = ivec2(gl_FragCoord.xy) & 3;
+  // The reach in this pass's pixels at p's distance, at least one ring of texels.
+  float reach = max(u_radius * u_projection[1][1] * 0.5 * u_size.y / -p.z, 2.0);
+  ivec2 cell = pixel & 3;
   float turn = (kTurn[cell.x + 4 * cell.y] + 0.5) * (6.2831853 / 16.0);
-  vec3 r = vec3(cos(turn), sin(turn), 0.0);
-  vec3 t = normalize(r - n * dot(r, n) + vec3(0.0, 0.0, 1e-4));
-  vec3 b = cross(n, t);
+  mat2 rotation = reach * mat2(cos(turn), sin(turn), -sin(turn), cos(turn));
+  // Taps on the spiral, turned; each surface point found there closes
+  // the hemisphere by how far it rises above p's tangent plane (the cosine of
+  // its direction to the normal), fading out beyond the reach. A plane closes
+  // nothing, at any resolution and any angle.
   float closed = 0.0;
-  for (int i = 0; i < 12; ++i) {
-    vec3 q = p + u_radius * (kPoints[i].x * t + kPoints[i].y * b + kPoints[i].z * n);
-    vec4 c = u_projection * vec4(q, 1.0);
-    float scene_z = view_depth(texture(u_depth, 0.5 * c.xy / c.w + 0.5).r);
-    // Blocked if the surface seen there is in front of the point, unless it
-    // is far in front (another object across a depth gap).
-    float near_enough = smoothstep(0.0, 1.0, u_radius / max(abs(p.z - scene_z), 1e-6));
-    closed += (scene_z > q.z + 0.02 * u_radius ? 1.0 : 0.0) * near_enough;
+  for (int i = 0; i < kTaps; ++i) {
+    ivec2 texel = clamp(pixel + ivec2(rotation * kSpiral[i]), ivec2(0), ivec2(u_size) - 1);
+    vec3 v = seen_at(texel) - p;
+    float distance2 = dot(v, v);
+    float rise = dot(v, n) * inversesqrt(distance2 + 1e-12);
+    closed += max(rise - 0.1, 0.0) * max(1.0 - distance2 / (u_radius * u_radius), 0.0);
   }
-  o_color = vec4(depth < 1.0 ? 1.0 - closed / 12.0 : 1.0);
+  o_color = vec4(depth < 1.0 ? clamp(1.0 - 3.0 * closed / float(kTaps), 0.0, 1.0) : 1.0);
 }
 )";
 }

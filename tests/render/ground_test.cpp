@@ -1,4 +1,6 @@
-// The floor's shadow cell: every floor point a sphere can shadow lies in it.
+// The floor's middle cell: every floor point a sphere can shadow lies in the
+// shadow's reach, every point near the sphere in the near reach, and the cell
+// stays inside the floor.
 #include "render/ground.h"
 
 #include <gtest/gtest.h>
@@ -14,50 +16,51 @@ Eigen::Vector3d shadow_on_floor(const Eigen::Vector3d& point, const Eigen::Vecto
   return point - to_light * ((point.y() - height) / to_light.y());
 }
 
-TEST(GroundShadowCell, HoldsTheShadowOfEveryPointOfTheSphere) {
+bool holds(const FloorRect& rect, double x, double z, double margin) {
+  return x >= rect.x0 + margin && x <= rect.x1 - margin && z >= rect.z0 + margin && z <= rect.z1 - margin;
+}
+
+TEST(GroundCell, TheShadowReachHoldsTheShadowOfEveryPointOfTheSphere) {
   const Eigen::Vector3d center(0.4, 0.7, -0.2);
   const double radius = 0.6, height = 0.1, reach = 0.01;
   for (double elevation : {10.0, 30.0, 45.0, 70.0, 89.0}) {
     for (double azimuth = 0.0; azimuth < 360.0; azimuth += 37.0) {
       const double el = elevation * std::numbers::pi / 180.0, az = azimuth * std::numbers::pi / 180.0;
       const Eigen::Vector3d to_light(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
-      GroundLayout layout = ground_layout(center.x(), center.z(), radius, height);
-      shadow_cell(layout, center, radius, to_light, reach);
-      const double whole = (layout.cell_x1 - layout.cell_x0) * (layout.cell_z1 - layout.cell_z0);
-      if (elevation >= 30.0) {
-        EXPECT_LT(whole, 0.5 * std::pow(2.0 * layout.fade_end, 2)) << elevation << " " << azimuth;
-      }
-      // Points on the sphere's surface, and within `reach` of their shadow.
+      const std::optional<FloorRect> rect = shadow_reach(height, center, radius, to_light, reach);
+      ASSERT_TRUE(rect.has_value());
+      // Tight: no wider than the ellipse's long axis and the reach need.
+      EXPECT_LE(rect->x1 - rect->x0, 2.0 * (radius + reach) / std::sin(el) + 1e-12);
       for (double theta = 0.0; theta <= std::numbers::pi; theta += std::numbers::pi / 12) {
         for (double phi = 0.0; phi < 2.0 * std::numbers::pi; phi += std::numbers::pi / 12) {
           const Eigen::Vector3d on_sphere =
               center + radius * Eigen::Vector3d(std::sin(theta) * std::cos(phi), std::cos(theta),
                                                 std::sin(theta) * std::sin(phi));
           const Eigen::Vector3d hit = shadow_on_floor(on_sphere, to_light, height);
-          const bool in_square = std::abs(hit.x() - center.x()) <= layout.fade_end &&
-                                 std::abs(hit.z() - center.z()) <= layout.fade_end;
-          if (!in_square) continue;  // beyond the floor: nothing to shade
-          // The lookups' reach matters only where the cell ends inside the floor.
-          const double x0 = center.x() - layout.fade_end, x1 = center.x() + layout.fade_end;
-          const double z0 = center.z() - layout.fade_end, z1 = center.z() + layout.fade_end;
-          EXPECT_GE(hit.x(), layout.cell_x0 == x0 ? x0 : layout.cell_x0 + reach) << elevation << " " << azimuth;
-          EXPECT_LE(hit.x(), layout.cell_x1 == x1 ? x1 : layout.cell_x1 - reach) << elevation << " " << azimuth;
-          EXPECT_GE(hit.z(), layout.cell_z0 == z0 ? z0 : layout.cell_z0 + reach) << elevation << " " << azimuth;
-          EXPECT_LE(hit.z(), layout.cell_z1 == z1 ? z1 : layout.cell_z1 - reach) << elevation << " " << azimuth;
+          EXPECT_TRUE(holds(*rect, hit.x(), hit.z(), reach)) << elevation << " " << azimuth;
         }
       }
     }
   }
 }
 
-TEST(GroundShadowCell, AGrazingLightKeepsTheWholeFloor) {
-  GroundLayout layout = ground_layout(0.0, 0.0, 1.0, 0.0);
-  const GroundLayout whole = layout;
-  shadow_cell(layout, Eigen::Vector3d(0.0, 1.0, 0.0), 1.0, Eigen::Vector3d(1.0, 0.0, 0.0), 0.0);
-  EXPECT_EQ(layout.cell_x0, whole.cell_x0);
-  EXPECT_EQ(layout.cell_x1, whole.cell_x1);
-  EXPECT_EQ(layout.cell_z0, whole.cell_z0);
-  EXPECT_EQ(layout.cell_z1, whole.cell_z1);
+TEST(GroundCell, AGrazingLightReachesTheWholeFloor) {
+  EXPECT_FALSE(shadow_reach(0.0, Eigen::Vector3d(0.0, 1.0, 0.0), 1.0, Eigen::Vector3d(1.0, 0.0, 0.0), 0.0));
+  EXPECT_FALSE(shadow_reach(0.0, Eigen::Vector3d(0.0, 1.0, 0.0), 1.0, Eigen::Vector3d(0.0, -1.0, 0.0), 0.0));
+}
+
+TEST(GroundCell, TheNearReachHoldsTheSphereSeenFromAboveAndTheCellStaysOnTheFloor) {
+  const Eigen::Vector3d center(1.0, 0.5, -2.0);
+  const FloorRect near = near_reach(center, 0.5, 0.1);
+  EXPECT_TRUE(holds(near, 1.0 + 0.5, -2.0, 0.1 - 1e-12));
+  EXPECT_TRUE(holds(near, 1.0, -2.0 - 0.5, 0.1 - 1e-12));
+  EXPECT_FALSE(holds(near, 1.0 + 0.61, -2.0, 0.0));
+
+  GroundLayout layout = ground_layout(center.x(), center.z(), 0.5, 0.0);
+  const FloorRect whole = layout.cell;
+  EXPECT_EQ(whole, (FloorRect{1.0 - 3.0, 1.0 + 3.0, -2.0 - 3.0, -2.0 + 3.0}));
+  set_cell(layout, near.united(FloorRect{-10.0, 0.0, -2.0, -1.0}));
+  EXPECT_EQ(layout.cell, (FloorRect{whole.x0, near.x1, near.z0, -1.0}));
 }
 
 }  // namespace
