@@ -16,8 +16,10 @@
 namespace recoil::render {
 
 struct SurfaceShading {
+  static constexpr float kStudioExponent = 48.0f;  // the studio's own highlight
+
   float metallic = 0.0f;    // 0 dielectric .. 1 metal
-  float shininess = 48.0f;  // Blinn-Phong exponent of the key's highlight
+  float shininess = kStudioExponent;  // Blinn-Phong exponent of the key's highlight
   float highlight = 1.0f;   // the highlight's peak relative to the studio's
 };
 
