@@ -98,14 +98,15 @@ struct SelfSearch {
   std::vector<double> motion;  // #V, self_motion
   double max_motion = 0.0;
   // Whether each vertex's point query runs (#V), and the edges that go into
-  // the self box scene (ascending): those whose rest clearance, less their
+  // the self box scene (ascending): bent ones whose rest clearance, less their
   // displacement from the rigid fit of the rest shape and the surface's
   // largest, is within the self query's radius (rest_clearance.h).
   std::vector<char> vertex;
   std::vector<int> edges;
 };
 
-SelfSearch self_search(const PreparedSurface& s, const RestClearance& clearance, double margin) {
+SelfSearch self_search(const PreparedSurface& s, const RestClearance& clearance, const std::vector<int>& bent,
+                       double margin) {
   SelfSearch out;
   out.motion = self_motion(s, margin);
   for (double q : out.motion) out.max_motion = std::max(out.max_motion, q);
@@ -118,24 +119,33 @@ SelfSearch self_search(const PreparedSurface& s, const RestClearance& clearance,
   out.vertex.resize(static_cast<size_t>(s.num_vertices()));
   for (size_t v = 0; v < out.vertex.size(); ++v)
     out.vertex[v] = clearance.vertex[v] - displacement[v] <= reach + out.motion[v];
-  for (size_t e = 0; e < s.edges.size(); ++e) {
-    const size_t p = static_cast<size_t>(s.edges[e][0]), q = static_cast<size_t>(s.edges[e][1]);
-    if (clearance.edge[e] - std::max(displacement[p], displacement[q]) <= reach + std::max(out.motion[p], out.motion[q]))
-      out.edges.push_back(static_cast<int>(e));
+  for (int e : bent) {
+    const size_t p = static_cast<size_t>(s.edges[static_cast<size_t>(e)][0]);
+    const size_t q = static_cast<size_t>(s.edges[static_cast<size_t>(e)][1]);
+    if (clearance.edge[static_cast<size_t>(e)] - std::max(displacement[p], displacement[q]) <=
+        reach + std::max(out.motion[p], out.motion[q]))
+      out.edges.push_back(e);
   }
   return out;
 }
 
-// Each edge's x0 box padded by margin/2 plus its motion, the larger of its
-// two vertices': against another surface (`self` null) every edge with its
-// absolute motion; against its own surface the searched edges only, with
-// their motion with respect to the surface (SelfSearch).
-std::vector<Aabb> edge_boxes(const PreparedSurface& s, double margin, const SelfSearch* self) {
-  const std::vector<int>* only = self ? &self->edges : nullptr;
-  const size_t n = only ? only->size() : s.edges.size();
-  std::vector<Aabb> boxes(n);
-  for (size_t k = 0; k < n; ++k) {
-    const size_t e = only ? static_cast<size_t>((*only)[k]) : k;
+// The edges that may be edge-edge candidates: those not flat (narrow_phase.h), ascending.
+std::vector<int> bent_edges(const PreparedSurface& s, double margin) {
+  std::vector<int> out;
+  for (int e = 0; e < s.num_edges(); ++e)
+    if (!flat_edge(s, e, margin)) out.push_back(e);
+  return out;
+}
+
+// The x0 box of each of `edges`, padded by margin/2 plus its motion, the
+// larger of its two vertices': against another surface (`self` null) its
+// absolute motion; against its own surface its motion with respect to the
+// surface (SelfSearch).
+std::vector<Aabb> edge_boxes(const PreparedSurface& s, double margin, const std::vector<int>& edges,
+                             const SelfSearch* self) {
+  std::vector<Aabb> boxes(edges.size());
+  for (size_t k = 0; k < edges.size(); ++k) {
+    const size_t e = static_cast<size_t>(edges[k]);
     const Eigen::Vector3d p = s.surface->x0.row(s.edges[e][0]).transpose();
     const Eigen::Vector3d q = s.surface->x0.row(s.edges[e][1]).transpose();
     const double motion = self ? std::max(self->motion[static_cast<size_t>(s.edges[e][0])],
@@ -166,6 +176,7 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
   std::vector<PreparedSurface> prepared;
   prepared.reserve(surfaces.size());
   std::vector<SelfSearch> searches(surfaces.size());
+  std::vector<std::vector<int>> bent(surfaces.size());  // per surface: bent_edges
   m_impl->scenes.resize(surfaces.size());
   for (size_t i = 0; i < surfaces.size(); ++i) {
     Impl::SurfaceScenes& sc = m_impl->scenes[i];
@@ -191,18 +202,20 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
       sc.self_edge_boxes.reset();
       ++m_stats.rebuilt_surfaces;
     }
-    sc.edge_boxes->set_boxes(edge_boxes(prepared[i], margin, nullptr), {});
+    bent[i] = bent_edges(prepared[i], margin);
+    sc.edge_boxes->set_boxes(edge_boxes(prepared[i], margin, bent[i], nullptr), {});
     if (self_interacts(prepared[i])) {
       if (!same || sc.rest_shape != s.rest || !sc.clearance) {
         sc.clearance = std::make_unique<RestClearance>(
             rest_clearance(m_impl->device, *s.rest, s.triangles, sc.edges, margin, clearance_reach(margin)));
         sc.rest_shape = s.rest;
       }
-      searches[i] = self_search(prepared[i], *sc.clearance, margin);
+      searches[i] = self_search(prepared[i], *sc.clearance, bent[i], margin);
       if (!sc.self_edge_boxes) sc.self_edge_boxes = std::make_unique<BoxScene>(m_impl->device);
       std::vector<std::array<int, 2>> keys;
       for (int e : searches[i].edges) keys.push_back(sc.edges[static_cast<size_t>(e)]);
-      sc.self_edge_boxes->set_boxes(edge_boxes(prepared[i], margin, &searches[i]), std::move(keys));
+      sc.self_edge_boxes->set_boxes(edge_boxes(prepared[i], margin, searches[i].edges, &searches[i]),
+                                    std::move(keys));
     }
   }
 
@@ -246,15 +259,15 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
     const BoxScene* boxes_a = self ? sa.self_edge_boxes.get() : sa.edge_boxes.get();
     const BoxScene* boxes_b = self ? sb.self_edge_boxes.get() : sb.edge_boxes.get();
     if (!boxes_a || !boxes_b) return;
-    // Self: each unordered pair once, (lo, hi), as test_edge_edge requires;
-    // the self box scene holds only the searched edges, ascending.
+    // The box scenes hold the bent edges (of those, the searched ones for
+    // self), ascending, so a self pair stays (lo, hi) as test_edge_edge requires.
     std::vector<std::pair<int, int>> pairs = boxes_a->overlapping_pairs(*boxes_b);
-    if (self) {
-      const std::vector<int>& searched = searches[static_cast<size_t>(a.index)].edges;
-      for (auto& [e, f] : pairs) {
-        e = searched[static_cast<size_t>(e)];
-        f = searched[static_cast<size_t>(f)];
-      }
+    const size_t ia = static_cast<size_t>(a.index), ib = static_cast<size_t>(b.index);
+    const std::vector<int>& edges_a = self ? searches[ia].edges : bent[ia];
+    const std::vector<int>& edges_b = self ? searches[ib].edges : bent[ib];
+    for (auto& [e, f] : pairs) {
+      e = edges_a[static_cast<size_t>(e)];
+      f = edges_b[static_cast<size_t>(f)];
     }
     m_stats.edge_edge_pairs += static_cast<long long>(pairs.size());
     if (self) m_stats.self_pairs += static_cast<long long>(pairs.size());

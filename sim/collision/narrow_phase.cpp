@@ -129,6 +129,10 @@ bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vect
 
 }  // namespace
 
+bool flat_edge(const PreparedSurface& s, int edge, double margin) {
+  return edge_bend(s, edge) <= kFeatureSnapShare * margin;
+}
+
 std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles) {
   std::vector<std::array<int, 2>> edges;
   edges.reserve(3 * static_cast<size_t>(triangles.rows()));
@@ -324,8 +328,7 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   if (!(distance <= margin + motion)) return std::nullopt;  // cheap: |relative| <= motion
   if (a.index == b.index && close_at_rest(a, ea, eb, margin)) return std::nullopt;
   // A flat edge adds nothing its neighbours do not (narrow_phase.h).
-  const double flat = kFeatureSnapShare * margin;
-  if (edge_bend(a, edge_a) <= flat || edge_bend(b, edge_b) <= flat) return std::nullopt;
+  if (flat_edge(a, edge_a, margin) || flat_edge(b, edge_b, margin)) return std::nullopt;
 
   const double tol = pair_tolerance(a, b);
   const Eigen::Vector3d a0e = point_at(sa.x1, ea[0]), a1e = point_at(sa.x1, ea[1]);

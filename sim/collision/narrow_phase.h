@@ -118,6 +118,11 @@ std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles);
 // exactly two triangles share it, one each way round.
 std::vector<std::array<int, 2>> edge_opposites(const Triangles& triangles, const std::vector<std::array<int, 2>>& edges);
 
+// Whether `edge` is flat at x0: its two triangles within margin/10 of one
+// plane. The edge-edge rule above never makes a flat edge a candidate, so the
+// broad phase may leave it out.
+bool flat_edge(const PreparedSurface& s, int edge, double margin);
+
 // False when no pair of primitives of a and b can satisfy the candidate rule:
 // their x0 boxes, each inflated by margin/2 + its largest motion, are apart.
 bool boxes_may_interact(const PreparedSurface& a, const PreparedSurface& b, double margin);
