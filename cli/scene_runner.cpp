@@ -27,6 +27,7 @@
 #include "render/frame_writer.h"
 #include "render/png.h"
 #include "render/png_probe.h"
+#include "render/refused_setting.h"
 #include "render/renderer.h"
 #include "sim/world.h"
 
@@ -136,11 +137,9 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     try {
       renderer = std::make_unique<render::Renderer>(settings);
       report.set_gl(render::gl_backend_name(renderer->backend()), renderer->gl_renderer());
-    } catch (const Error& e) {
-      if (e.kind() != ErrorKind::bad_input) throw;
-      // The renderer refuses a resolution or an msaa count its driver cannot draw; its message says which.
-      const bool msaa = std::string(e.what()).rfind("render msaa", 0) == 0;
-      throw Error(e.kind(), scene.label() + (msaa ? ": /render/msaa: " : ": /render/resolution: ") + e.what());
+    } catch (const render::RefusedSetting& e) {
+      // A resolution or an msaa count the renderer or its driver cannot draw.
+      throw Error(e.kind(), scene.label() + ": /render/" + e.field() + ": " + e.what());
     }
     const render::FrameWriterSize size = render::default_frame_writer_size();
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), size.threads, size.capacity);

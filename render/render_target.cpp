@@ -5,6 +5,7 @@
 #include <string>
 
 #include "core/error.h"
+#include "render/refused_setting.h"
 
 namespace recoil::render {
 namespace {
@@ -17,7 +18,7 @@ void check_complete(const char* what, int width, int height, int samples) {
     const double gib = 8.0 * width * height * std::max(1, samples) / (1024.0 * 1024.0 * 1024.0);
     char size[32];
     std::snprintf(size, sizeof size, "%.1f", gib);
-    throw bad_input(std::string("the OpenGL driver cannot allocate the ") + what + " framebuffer of " +
+    throw RefusedSetting("resolution", std::string("the OpenGL driver cannot allocate the ") + what + " framebuffer of " +
                     std::to_string(width) + "x" + std::to_string(height) + " pixels at " + std::to_string(samples) +
                     " samples (" + size + " GiB, status " + std::to_string(status) + "); lower the resolution or msaa");
   }
@@ -45,11 +46,11 @@ RenderTarget::RenderTarget(int width, int height, int msaa)
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
   if (width > max_size || height > max_size) {
-    throw bad_input("render resolution " + std::to_string(width) + "x" + std::to_string(height) +
+    throw RefusedSetting("resolution", "render resolution " + std::to_string(width) + "x" + std::to_string(height) +
                     " exceeds the OpenGL driver's limit of " + std::to_string(max_size));
   }
   if (msaa > max_samples) {
-    throw bad_input("render msaa " + std::to_string(msaa) + " exceeds the OpenGL driver's limit of " +
+    throw RefusedSetting("msaa", "render msaa " + std::to_string(msaa) + " exceeds the OpenGL driver's limit of " +
                     std::to_string(max_samples) + " samples");
   }
   storage(m_draw_color.get(), msaa, GL_SRGB8_ALPHA8, width, height);
@@ -66,7 +67,7 @@ RenderTarget::RenderTarget(int width, int height, int msaa)
     glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
     if (samples != msaa) {
       const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
-      throw bad_input("render msaa " + std::to_string(msaa) + ": this OpenGL driver (" +
+      throw RefusedSetting("msaa", "render msaa " + std::to_string(msaa) + ": this OpenGL driver (" +
                       std::string(renderer ? renderer : "unknown") + ") draws " + std::to_string(samples) +
                       " samples when asked for " + std::to_string(msaa) + "; use msaa 0" +
                       (samples == 2 || samples == 4 ? " or " + std::to_string(samples) : std::string()));

@@ -17,6 +17,7 @@
 #include "render/gl.h"
 #include "render/ground.h"
 #include "render/mesh_buffers.h"
+#include "render/refused_setting.h"
 #include "render/render_target.h"
 #include "render/shader_program.h"
 #include "render/shaders.h"
@@ -89,11 +90,11 @@ void validate(const Camera& c) {
 
 void validate(const RenderSettings& s) {
   if (s.width < 1 || s.height < 1 || s.width > 16384 || s.height > 16384) {
-    throw bad_input("render resolution " + std::to_string(s.width) + "x" + std::to_string(s.height) +
+    throw RefusedSetting("resolution", "render resolution " + std::to_string(s.width) + "x" + std::to_string(s.height) +
                     " is outside 1x1 .. 16384x16384");
   }
   if (s.msaa != 0 && s.msaa != 2 && s.msaa != 4) {
-    throw bad_input("render msaa must be 0, 2 or 4, not " + std::to_string(s.msaa));
+    throw RefusedSetting("msaa", "render msaa must be 0, 2 or 4, not " + std::to_string(s.msaa));
   }
 }
 

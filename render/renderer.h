@@ -35,8 +35,8 @@ struct RenderSettings {
 class Renderer {
  public:
   // Creates the OpenGL context (throws recoil::Error without OSMesa or EGL) and the
-  // framebuffers. Throws recoil::Error(bad_input) for a size or msaa the
-  // settings or the driver do not allow.
+  // framebuffers. Throws RefusedSetting (refused_setting.h, bad input) for a
+  // size or msaa the settings or the driver do not allow.
   explicit Renderer(const RenderSettings& settings);
   ~Renderer();
   Renderer(const Renderer&) = delete;
