@@ -9,6 +9,7 @@
 #include "cli/scene_parser.h"
 #include "cli/scene_runner.h"
 #include "core/error.h"
+#include "core/text_columns.h"
 #include "sim/world.h"
 
 namespace recoil::cli {
@@ -85,11 +86,14 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
   constexpr size_t kWidestName = 32;
   size_t name_width = 15;
   for (const nlohmann::json& row : bodies)
-    name_width = std::max(name_width, std::min(kWidestName, row["name"].get<std::string>().size()));
+    name_width = std::max(name_width, std::min(kWidestName, text_columns(row["name"].get<std::string>())));
   for (const nlohmann::json& row : bodies) {
     const std::string name = row["name"].get<std::string>();
-    text << "    " << std::left << std::setw(static_cast<int>(name_width + 1)) << name;
-    if (name.size() > name_width) text << "\n    " << std::string(name_width + 1, ' ');
+    const std::size_t columns = text_columns(name);
+    text << "    " << name;
+    if (columns > name_width) text << "\n    " << std::string(name_width + 1, ' ');
+    else text << std::string(name_width + 1 - columns, ' ');
+    text << std::left;
     text << std::setw(11) << row["type"].get<std::string>();
     if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
     if (row.contains("collision_triangles") && row["collision_triangles"] != row["surface_triangles"])

@@ -7,6 +7,7 @@
 #include <vector>
 #include <nlohmann/json.hpp>
 
+#include "core/text_columns.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -55,6 +56,29 @@ TEST(InfoCommand, SceneBodyColumnsStayApartForLongNames) {
   EXPECT_TRUE(long_name_alone) << r.out;
   ASSERT_EQ(type_columns.size(), 4u) << r.out;
   for (size_t column : type_columns) EXPECT_EQ(column, 4u + 32u + 1u) << r.out;  // the widest column, and a space
+}
+
+TEST(InfoCommand, SceneBodyColumnsLineUpForNamesBeyondAscii) {
+  nlohmann::json scene = nlohmann::json::parse(file_bytes(source_path("assets/scenes/jelly-stack.json")));
+  scene["bodies"][1]["name"] = "W\u00fcrfel-\u00e9t\u00e9-\u0436\u0435\u043b\u0435";  // two bytes a letter beyond ASCII
+  const auto dir = scratch_dir("info_utf8_names");
+  const auto path = dir / "scene.json";
+  {
+    std::ofstream out(path);
+    out << scene.dump(2);
+  }
+  const CommandResult r = run_recoil("info " + shell_quote(path));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::istringstream lines(r.out);
+  std::vector<size_t> type_columns;  // in characters, not bytes
+  for (std::string line; std::getline(lines, line);) {
+    for (const char* type : {"plane", "deformable"}) {
+      const size_t at = line.find(std::string(" ") + type);
+      if (line.rfind("    ", 0) == 0 && at != std::string::npos) type_columns.push_back(text_columns(line.substr(0, at + 1)));
+    }
+  }
+  ASSERT_EQ(type_columns.size(), 4u) << r.out;
+  for (size_t column : type_columns) EXPECT_EQ(column, type_columns.front()) << r.out;
 }
 
 TEST(InfoCommand, MissingFileIsExit2WithOneErrorLine) {
