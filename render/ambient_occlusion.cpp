@@ -38,7 +38,9 @@ gl::Framebuffer make_target(GLenum attachment, const gl::Texture& texture) {
 }  // namespace
 
 AmbientOcclusion::AmbientOcclusion(int frame_width, int frame_height)
-    : m_width(std::max(1, (frame_width + kScale - 1) / kScale)),
+    : m_frame_width(frame_width),
+      m_frame_height(frame_height),
+      m_width(std::max(1, (frame_width + kScale - 1) / kScale)),
       m_height(std::max(1, (frame_height + kScale - 1) / kScale)),
       m_depth(make_texture(m_width, m_height, GL_DEPTH_COMPONENT24, GL_DEPTH_COMPONENT, GL_UNSIGNED_INT, GL_NEAREST)),
       m_raw(make_texture(m_width, m_height, GL_R8, GL_RED, GL_UNSIGNED_BYTE, GL_LINEAR)),

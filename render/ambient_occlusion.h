@@ -28,9 +28,11 @@ class AmbientOcclusion {
   };
 
   // Binds the depth target, viewport set and depth cleared, for depth-only
-  // draws limited to `region`; outside it everything stays open (1).
+  // draws limited to `region`; outside it everything stays open (1). It
+  // leaves the scissor test on, and the clear colour white, until resolve().
   void begin_depth(const Region& region);
-  // Turns the depth drawn into occlusion, in the region only. `projection`:
+  // Turns the depth drawn into occlusion, in the region only, and turns the
+  // scissor test off again. `projection`:
   // the frame's view to clip (4 by 4, a symmetric perspective); `radius`: how
   // far the occlusion reaches, metres.
   void resolve(const Eigen::Matrix4f& projection, float radius);
@@ -38,8 +40,12 @@ class AmbientOcclusion {
   void bind_texture(GLenum unit) const;
   int width() const { return m_width; }
   int height() const { return m_height; }
+  // The frame it covers, which the depth pass stretches over its own size.
+  int frame_width() const { return m_frame_width; }
+  int frame_height() const { return m_frame_height; }
 
  private:
+  int m_frame_width, m_frame_height;
   int m_width, m_height;
   gl::Texture m_depth;
   gl::Texture m_raw;      // occlusion before the blur

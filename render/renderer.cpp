@@ -119,7 +119,8 @@ std::string hex(unsigned value) {
 
 // The meshes' ambient occlusion is the renderer's, fixed by its settings.
 ShaderProgram mesh_program(bool shadows, bool textured, const RenderSettings& s) {
-  const std::string name = std::string("mesh") + (shadows ? "+shadow" : "") + (textured ? "+texture" : "");
+  const std::string name = std::string("mesh") + (shadows ? "+shadow" : "") + (textured ? "+texture" : "") +
+                           (s.ambient_occlusion ? "+occlusion" : "");
   return ShaderProgram(name, shaders::mesh_vertex(), shaders::mesh_fragment(shadows, textured, s.ambient_occlusion));
 }
 
@@ -367,8 +368,8 @@ void Renderer::Impl::set_common(ShaderProgram& p, const Frame& frame) {
   glUniform2f(p.location("u_shadow_texel"), texel, texel);
   if (occlusion) {
     set(p, "u_ao", static_cast<int>(kOcclusionUnit - GL_TEXTURE0));
-    glUniform2f(p.location("u_frame_size"), static_cast<float>(AmbientOcclusion::kScale * occlusion->width()),
-                static_cast<float>(AmbientOcclusion::kScale * occlusion->height()));
+    glUniform2f(p.location("u_frame_size"), static_cast<float>(occlusion->frame_width()),
+                static_cast<float>(occlusion->frame_height()));
     set(p, "u_ao_weight", frame.occlusion ? 1.0f : 0.0f);
   }
 }
@@ -435,11 +436,12 @@ void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderSce
   // Shadow and occlusion lookups run on the floor's cell that a shadow or
   // the occlusion can reach; around it they would return "open" anyway.
   GroundLayout g = frame.ground;
-  const bool lookups = frame.shadows || frame.occlusion;
+  // A shadow catcher (transparent background) draws the shadow alone.
+  const bool occluded = frame.occlusion && !settings.transparent_background;
+  const bool lookups = frame.shadows || occluded;
   if (lookups) {
-    std::optional<FloorRect> cell = frame.occlusion ? std::optional(near_reach(frame.center, frame.radius,
-                                                                                occlusion_reach(frame)))
-                                                    : std::nullopt;
+    std::optional<FloorRect> cell =
+        occluded ? std::optional(near_reach(frame.center, frame.radius, occlusion_reach(frame))) : std::nullopt;
     bool whole = false;
     if (frame.shadows) {
       const std::optional<FloorRect> shadow = shadow_reach(g.height, frame.center, frame.radius,

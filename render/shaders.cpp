@@ -58,8 +58,9 @@ const float kSpecular = 0.25;
 
 // Radiance leaving a surface (linear) lit by the rig; n unit, facing the
 // viewer; `visibility`: the key light's share that is not shadowed; `open`:
-// the ambient occlusion's open share, which dims all diffuse light, as a
-// crease would in a soft-lit studio.
+// the ambient occlusion's open share, which dims all diffuse light and a
+// metal's reflected ambient, as a crease would in a soft-lit studio; the
+// key's highlight is left alone.
 vec3 studio_light(vec3 albedo, vec3 n, vec3 world, float visibility, float open) {
   float key = max(dot(n, u_key_dir), 0.0) * visibility;
   float fill = max(dot(n, u_fill_dir), 0.0);
@@ -288,8 +289,9 @@ std::string box_blur_fragment() {
 uniform sampler2D u_source;  // bilinear
 uniform vec2 u_texel;        // one texel in texture coordinates
 out vec4 o_color;
-// The mean of the 4x4 texels around this one: four bilinear taps, each on
-// the corner between four texels.
+// The mean of the 4x4 texels from one below to two above this one in x and
+// y (a 4-wide box has no centre texel): four bilinear taps, each on the
+// corner between four texels.
 void main() {
   vec2 uv = gl_FragCoord.xy * u_texel;
   o_color = vec4(0.25 * (texture(u_source, uv + vec2(-0.5, -0.5) * u_texel).r +

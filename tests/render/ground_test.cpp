@@ -29,8 +29,6 @@ TEST(GroundCell, TheShadowReachHoldsTheShadowOfEveryPointOfTheSphere) {
       const Eigen::Vector3d to_light(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
       const std::optional<FloorRect> rect = shadow_reach(height, center, radius, to_light, reach);
       ASSERT_TRUE(rect.has_value());
-      // Tight: no wider than the ellipse's long axis and the reach need.
-      EXPECT_LE(rect->x1 - rect->x0, 2.0 * (radius + reach) / std::sin(el) + 1e-12);
       for (double theta = 0.0; theta <= std::numbers::pi; theta += std::numbers::pi / 12) {
         for (double phi = 0.0; phi < 2.0 * std::numbers::pi; phi += std::numbers::pi / 12) {
           const Eigen::Vector3d on_sphere =
