@@ -212,6 +212,9 @@ struct Renderer::Impl {
   Frame upload(const RenderSettings& settings, const RenderScene& scene, const Camera& camera);
   void shadow_pass(const RenderScene& scene, const Frame& frame);
   void occlusion_pass(const RenderSettings& settings, const RenderScene& scene, const Frame& frame);
+  // The meshes whose opacity `accept` takes, with the bound depth-only program.
+  template <typename Accept>
+  void draw_depth(const RenderScene& scene, Accept accept);
   void set_common(ShaderProgram& p, const Frame& frame);
   void set_lighting(ShaderProgram& p, const Frame& frame, const Camera& camera);
   void draw_mesh(const RenderSettings& settings, const RenderMesh& mesh, const MeshBuffers& buffers,
@@ -303,14 +306,7 @@ void Renderer::Impl::shadow_pass(const RenderScene& scene, const Frame& frame) {
   glPolygonOffset(2.0f, 2.0f);
   depth_program.use();
   set(depth_program, "u_view_projection", light_clip);
-  glCullFace(GL_BACK);
-  for (size_t i = 0; i < meshes.size(); ++i) {
-    if (scene.meshes[i].opacity <= 0.0f) continue;
-    // A closed mesh's faces turned from the light are hidden by its lit side.
-    set_culling(meshes[i].closed());
-    meshes[i].draw();
-  }
-  set_culling(false);
+  draw_depth(scene, [](float opacity) { return opacity > 0.0f; });
   glDisable(GL_POLYGON_OFFSET_FILL);
 }
 
@@ -342,18 +338,24 @@ AmbientOcclusion::Region occlusion_region(const Frame& frame, int width, int hei
           std::min(static_cast<int>(std::ceil(pixel(hi.y(), height))) + 2, height)};
 }
 
+template <typename Accept>
+void Renderer::Impl::draw_depth(const RenderScene& scene, Accept accept) {
+  // A closed mesh's back faces are hidden by its front faces.
+  glCullFace(GL_BACK);
+  for (size_t i = 0; i < meshes.size(); ++i) {
+    if (!accept(scene.meshes[i].opacity)) continue;
+    set_culling(meshes[i].closed());
+    meshes[i].draw();
+  }
+  set_culling(false);
+}
+
 void Renderer::Impl::occlusion_pass(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
   // What the lighting passes see opaque: the opaque meshes and the floor.
   occlusion->begin_depth(occlusion_region(frame, occlusion->width(), occlusion->height()));
   depth_program.use();
   set(depth_program, "u_view_projection", frame.view_projection);
-  glCullFace(GL_BACK);
-  for (size_t i = 0; i < meshes.size(); ++i) {
-    if (scene.meshes[i].opacity < kOpaque) continue;
-    set_culling(meshes[i].closed());
-    meshes[i].draw();
-  }
-  set_culling(false);
+  draw_depth(scene, [](float opacity) { return opacity >= kOpaque; });
   if (scene.ground && settings.ground) ground.draw(frame.ground);
   occlusion->resolve(frame.projection, static_cast<float>(occlusion_reach(frame)));
 }

@@ -28,6 +28,16 @@ TEST(InfoCommand, BunnyIsClosedWithPositiveVolume) {
   EXPECT_NE(text.out.find("watertight   yes"), std::string::npos) << text.out;
 }
 
+// `recoil info` of `scene`, written to a scratch folder `name`.
+CommandResult info_of(const nlohmann::json& scene, const std::string& name) {
+  const auto path = scratch_dir(name) / "scene.json";
+  {
+    std::ofstream out(path);
+    out << scene.dump(2);
+  }
+  return run_recoil("info " + shell_quote(path));
+}
+
 // A scene's body table: the type column starts where the longest name
 // (up to 32 characters) ends; a longer name has the line to itself.
 TEST(InfoCommand, SceneBodyColumnsStayApartForLongNames) {
@@ -35,13 +45,7 @@ TEST(InfoCommand, SceneBodyColumnsStayApartForLongNames) {
   const std::string long_name = "a-very-long-body-name-from-an-artist-file-Cube.001_Material";
   scene["bodies"][1]["name"] = long_name;
   scene["bodies"][2]["name"] = "jelly-with-a-longer-name";
-  const auto dir = scratch_dir("info_long_names");
-  const auto path = dir / "scene.json";
-  {
-    std::ofstream out(path);
-    out << scene.dump(2);
-  }
-  const CommandResult r = run_recoil("info " + shell_quote(path));
+  const CommandResult r = info_of(scene, "info_long_names");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::istringstream lines(r.out);
   std::vector<size_t> type_columns;
@@ -61,13 +65,7 @@ TEST(InfoCommand, SceneBodyColumnsStayApartForLongNames) {
 TEST(InfoCommand, SceneBodyColumnsLineUpForNamesBeyondAscii) {
   nlohmann::json scene = nlohmann::json::parse(file_bytes(source_path("assets/scenes/jelly-stack.json")));
   scene["bodies"][1]["name"] = "W\u00fcrfel-\u00e9t\u00e9-\u0436\u0435\u043b\u0435";  // two bytes a letter beyond ASCII
-  const auto dir = scratch_dir("info_utf8_names");
-  const auto path = dir / "scene.json";
-  {
-    std::ofstream out(path);
-    out << scene.dump(2);
-  }
-  const CommandResult r = run_recoil("info " + shell_quote(path));
+  const CommandResult r = info_of(scene, "info_utf8_names");
   ASSERT_EQ(r.exit_code, 0) << r.err;
   std::istringstream lines(r.out);
   std::vector<size_t> type_columns;  // in characters, not bytes
