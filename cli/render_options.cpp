@@ -19,7 +19,7 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
   command.add_flag("--no-shadows", options.no_shadows, "Skip the key light's shadow (faster)")->group(group);
   command.add_flag("--ao", options.ambient_occlusion,
                    "Ambient occlusion: creases, and the floor where a body meets it, darken (a fifth to a "
-                   "quarter more render time)")
+                   "third more render time)")
       ->group(group);
   command.add_flag("--no-ground", options.no_ground,
                    "Draw no ground (it still holds the bodies up); over --background transparent the ground is "
