@@ -27,6 +27,11 @@ class AmbientOcclusion {
     int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
   };
 
+  // The pixels of this pass where a cube (center, half size in metres) can
+  // show, seen through `view_projection` (world to clip, 4 by 4), plus the
+  // blur's two pixels; all of them when a corner is behind the eye.
+  Region region_around(const Eigen::Vector3d& center, double half, const Eigen::Matrix4f& view_projection) const;
+
   // Binds the depth target, viewport set and depth cleared, for depth-only
   // draws limited to `region`; outside it everything stays open (1). It
   // leaves the scissor test on, and the clear colour white, until resolve().

@@ -312,32 +312,6 @@ void Renderer::Impl::shadow_pass(const RenderScene& scene, const Frame& frame) {
 
 double occlusion_reach(const Frame& frame) { return kOcclusionReach * frame.radius; }
 
-// Where the occlusion can be other than open, in its pass's pixels: the
-// meshes' sphere, grown by twice the reach (a point's tests reach that far),
-// boxed and projected, plus the blur's two pixels; all of it when a corner of
-// that box is behind the eye.
-AmbientOcclusion::Region occlusion_region(const Frame& frame, int width, int height) {
-  const AmbientOcclusion::Region whole{0, 0, width, height};
-  const double half = frame.radius + 2.0 * occlusion_reach(frame);
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d p = frame.center + half * Eigen::Vector3d(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1,
-                                                                    corner & 4 ? 1 : -1);
-    const Eigen::Vector4d clip = frame.view_projection.cast<double>() * Eigen::Vector4d(p.x(), p.y(), p.z(), 1.0);
-    if (!(clip.w() > 1e-9)) return whole;
-    const Eigen::Vector2d ndc = clip.head<2>() / clip.w();
-    lo = lo.cwiseMin(ndc);
-    hi = hi.cwiseMax(ndc);
-  }
-  auto pixel = [](double ndc, int size) {
-    return std::clamp((0.5 * std::clamp(ndc, -2.0, 2.0) + 0.5) * size, 0.0, static_cast<double>(size));
-  };
-  return {std::max(static_cast<int>(std::floor(pixel(lo.x(), width))) - 2, 0),
-          std::max(static_cast<int>(std::floor(pixel(lo.y(), height))) - 2, 0),
-          std::min(static_cast<int>(std::ceil(pixel(hi.x(), width))) + 2, width),
-          std::min(static_cast<int>(std::ceil(pixel(hi.y(), height))) + 2, height)};
-}
-
 template <typename Accept>
 void Renderer::Impl::draw_depth(const RenderScene& scene, Accept accept) {
   // A closed mesh's back faces are hidden by its front faces.
@@ -352,7 +326,9 @@ void Renderer::Impl::draw_depth(const RenderScene& scene, Accept accept) {
 
 void Renderer::Impl::occlusion_pass(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
   // What the lighting passes see opaque: the opaque meshes and the floor.
-  occlusion->begin_depth(occlusion_region(frame, occlusion->width(), occlusion->height()));
+  // A point's taps reach twice the reach from the meshes' sphere at most.
+  occlusion->begin_depth(occlusion->region_around(frame.center, frame.radius + 2.0 * occlusion_reach(frame),
+                                                  frame.view_projection));
   depth_program.use();
   set(depth_program, "u_view_projection", frame.view_projection);
   draw_depth(scene, [](float opacity) { return opacity >= kOpaque; });
