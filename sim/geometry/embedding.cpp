@@ -69,19 +69,40 @@ double plane_distance(const TetMesh& mesh, int t, const Eigen::Vector3d& p) {
   return d;
 }
 
+// What barycentric coordinates in one tet need: its first node and the LU
+// of its edge matrix [x1 - x0, x2 - x0, x3 - x0] (3x3, m), factored once
+// per tet rather than once per point tested against it.
+struct TetFrame {
+  Eigen::Vector3d x0;
+  Eigen::PartialPivLU<Eigen::Matrix3d> lu;
+};
+
+TetFrame tet_frame(const Points& nodes, const Tets& tets, int t) {
+  TetFrame f;
+  f.x0 = nodes.row(tets(t, 0)).transpose();
+  Eigen::Matrix3d dm;
+  for (int k = 0; k < 3; ++k) dm.col(k) = nodes.row(tets(t, k + 1)).transpose() - f.x0;
+  f.lu.compute(dm);
+  return f;
+}
+
+Eigen::Vector4d weights_in(const TetFrame& f, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d l = f.lu.solve(p - f.x0);
+  return {1.0 - l.sum(), l[0], l[1], l[2]};
+}
+
 }  // namespace
 
 Eigen::Vector4d barycentric(const Points& nodes, const Tets& tets, int t, const Eigen::Vector3d& p) {
-  const Eigen::Vector3d x0 = nodes.row(tets(t, 0)).transpose();
-  Eigen::Matrix3d dm;
-  for (int k = 0; k < 3; ++k) dm.col(k) = nodes.row(tets(t, k + 1)).transpose() - x0;
-  const Eigen::Vector3d l = dm.partialPivLu().solve(p - x0);
-  return {1.0 - l.sum(), l[0], l[1], l[2]};
+  return weights_in(tet_frame(nodes, tets, t), p);
 }
 
 Embedding embed_points(const TetMesh& mesh, const Points& points) {
   RECOIL_CHECK(!mesh.empty());
   const TetGrid grid(mesh);
+  std::vector<TetFrame> frames;
+  frames.reserve(static_cast<size_t>(mesh.num_tets()));
+  for (int t = 0; t < mesh.num_tets(); ++t) frames.push_back(tet_frame(mesh.nodes, mesh.tets, t));
   Embedding e;
   e.tet.resize(points.rows());
   e.weights.resize(points.rows(), 4);
@@ -92,7 +113,7 @@ Embedding embed_points(const TetMesh& mesh, const Points& points) {
     int best = -1;
     double best_min = -std::numeric_limits<double>::infinity();
     for (int t : grid.bucket(c[0], c[1], c[2])) {
-      const double m = barycentric(mesh.nodes, mesh.tets, t, p).minCoeff();
+      const double m = weights_in(frames[static_cast<size_t>(t)], p).minCoeff();
       if (m > best_min) { best_min = m; best = t; }
     }
     if (best_min < -1e-10) {
@@ -120,7 +141,7 @@ Embedding embed_points(const TetMesh& mesh, const Points& points) {
     }
     RECOIL_CHECK(best >= 0, "vertex " << v);
     e.tet[v] = best;
-    e.weights.row(v) = barycentric(mesh.nodes, mesh.tets, best, p).transpose();
+    e.weights.row(v) = weights_in(frames[static_cast<size_t>(best)], p).transpose();
   }
   return e;
 }
