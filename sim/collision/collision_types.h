@@ -20,10 +20,12 @@ struct CollisionSurface {
   Points x1;               // #V by 3, predicted positions at the end of the step (m)
   Triangles triangles;     // #F by 3, indices into x0/x1, counter-clockwise from outside
   bool self_contact = false;  // only honoured for deformable surfaces
-  // #V by 3, the rest shape (m); required with self_contact. Two primitives of
-  // the surface within the margin of each other at rest are never a contact:
-  // that closeness is modelled (neighbouring triangles, a narrow gap), and
-  // the elasticity, not a constraint, keeps it.
+  // #V by 3, the rest shape (m); required with self_contact. A pair of the
+  // surface's primitives is a contact only within min(margin, rest distance
+  // - margin) of each other: deformation must have closed a margin of what
+  // the rest shape holds apart. Closeness at rest is modelled (neighbouring
+  // triangles, a narrow gap) and the elasticity, not a constraint, keeps it;
+  // a pair within the margin at rest is never a contact.
   const Points* rest = nullptr;
 };
 

@@ -224,14 +224,11 @@ bool self_interacts(const PreparedSurface& a) {
 
 namespace {
 
-// The self-contact rule (collision_types.h): primitives of one surface that
-// lie within the margin of each other in the rest shape are never a contact.
-bool close_at_rest(const PreparedSurface& s, int vertex, const std::array<int, 3>& triangle, double margin) {
-  return rest_distance(*s.surface->rest, vertex, triangle) <= margin;
-}
-bool close_at_rest(const PreparedSurface& s, const std::array<int, 2>& e, const std::array<int, 2>& f, double margin) {
-  return rest_distance(*s.surface->rest, e, f) <= margin;
-}
+// The self-contact rule (collision_types.h): how near (m) a pair of one
+// surface must come to be a candidate, min(margin, rest distance - margin);
+// zero or less for a pair within the margin of each other at rest, never a
+// contact.
+double self_reach(double rest_distance, double margin) { return std::min(margin, rest_distance - margin); }
 
 }  // namespace
 bool interacts_with_planes(const PreparedSurface& a) { return !is_prescribed(a.surface->kind); }
@@ -254,11 +251,12 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   double relative = 0.0;  // narrow_phase.h: how far p moves with respect to any point of the triangle
   for (int k = 0; k < 3; ++k) relative = std::max(relative, ((p1 - p0) - (t1[k] - t0[k])).norm());
   if (!(distance <= margin + relative)) return std::nullopt;
-  if (a.index == b.index && close_at_rest(a, vertex, tv, margin)) return std::nullopt;
+  const double reach = a.index == b.index ? self_reach(rest_distance(*sa.rest, vertex, tv), margin) : margin;
+  if (!(reach > 0.0) || !(distance <= reach + relative)) return std::nullopt;
   // The same bound from the end of the step (narrow_phase.h).
   if (relative > 0.0) {
     const Eigen::Vector3d end = closest_point_on_triangle(p1, t1[0], t1[1], t1[2]).point;
-    if (!((p1 - end).norm() <= margin + relative)) return std::nullopt;
+    if (!((p1 - end).norm() <= reach + relative)) return std::nullopt;
   }
 
   const double tol = pair_tolerance(a, b);
@@ -281,18 +279,18 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
     c.toi = vertex_triangle_toi(p0, p1, t0[0], t1[0], t0[1], t1[1], t0[2], t1[2], tol + 1e-12 * motion);
 
   Eigen::Vector3d feature = Eigen::Vector3d::Zero();
-  const double reach = kFeatureSnapShare * margin + tol;
+  const double snap = kFeatureSnapShare * margin + tol;
   SurfacePoint exact = c.b;  // the true closest point: the normal and gap come from it
   if (c.toi) {
     // Weights and normal where the vertex meets the triangle.
     const double s = *c.toi;
     const Eigen::Vector3d ta = lerp(t0[0], t1[0], s), tb = lerp(t0[1], t1[1], s), tc = lerp(t0[2], t1[2], s);
     exact.weight = closest_point_on_triangle(lerp(p0, p1, s), ta, tb, tc).weight;
-    c.b.weight = snap_to_feature(exact.weight, {ta, tb, tc}, reach);
+    c.b.weight = snap_to_feature(exact.weight, {ta, tb, tc}, snap);
     feature = face_normal(ta, tb, tc);
   } else {
     exact.weight = closest.weight;
-    c.b.weight = snap_to_feature(exact.weight, t0, reach);
+    c.b.weight = snap_to_feature(exact.weight, t0, snap);
     feature = face_normal(t0[0], t0[1], t0[2]);
   }
   // The snapped weights name the feature and carry the rows (and the gap);
@@ -326,7 +324,8 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const double distance = ((a0 + closest.s * (a1 - a0)) - (b0 + closest.t * (b1 - b0))).norm();
   const double motion = a.edge_motion[edge_a] + b.edge_motion[edge_b];
   if (!(distance <= margin + motion)) return std::nullopt;  // cheap: |relative| <= motion
-  if (a.index == b.index && close_at_rest(a, ea, eb, margin)) return std::nullopt;
+  const double reach = a.index == b.index ? self_reach(rest_distance(*sa.rest, ea, eb), margin) : margin;
+  if (!(reach > 0.0) || !(distance <= reach + motion)) return std::nullopt;
   // A flat edge adds nothing its neighbours do not (narrow_phase.h).
   if (flat_edge(a, edge_a, margin) || flat_edge(b, edge_b, margin)) return std::nullopt;
 
@@ -337,10 +336,10 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   for (const Eigen::Vector3d& da_i : {Eigen::Vector3d(a0e - a0), Eigen::Vector3d(a1e - a1)})
     for (const Eigen::Vector3d& db_j : {Eigen::Vector3d(b0e - b0), Eigen::Vector3d(b1e - b1)})
       relative = std::max(relative, (da_i - db_j).norm());
-  if (!(distance <= margin + relative)) return std::nullopt;
+  if (!(distance <= reach + relative)) return std::nullopt;
   if (relative > 0.0) {  // the same bound from the end of the step
     const SegmentClosestPoints end = closest_points_on_segments(a0e, a1e, b0e, b1e);
-    if (!(((a0e + end.s * (a1e - a0e)) - (b0e + end.t * (b1e - b0e))).norm() <= margin + relative)) return std::nullopt;
+    if (!(((a0e + end.s * (a1e - a0e)) - (b0e + end.t * (b1e - b0e))).norm() <= reach + relative)) return std::nullopt;
   }
   std::optional<double> toi;
   if (motion > 0.0) toi = edge_edge_toi(a0, a0e, a1, a1e, b0, b0e, b1, b1e, tol + 1e-12 * motion);
@@ -355,8 +354,8 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   feature = edge_cross(da, db);
   // A closest point at (or near) an edge's end is a vertex contact, and
   // nearly parallel edges are held by their end vertices (narrow_phase.h).
-  const double reach = kFeatureSnapShare * margin + tol;
-  auto near_end = [&](double s, double length) { return std::min(s, 1.0 - s) * length < reach; };
+  const double snap = kFeatureSnapShare * margin + tol;
+  auto near_end = [&](double s, double length) { return std::min(s, 1.0 - s) * length < snap; };
   if (near_end(closest.s, da.norm()) || near_end(closest.t, db.norm())) return std::nullopt;
   // Parallel to within the margin over the longer edge's length: the ends
   // stay within the margin of the other edge, and their vertex-triangle

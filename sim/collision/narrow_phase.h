@@ -36,11 +36,14 @@
 //   (normal rows with cosine 0.9999): near-duplicates that the contact
 //   solver cannot tell apart.
 // - vertex v / plane: min(signed distance at x0, at x1) <= margin.
-// Self-contact drops every pair whose primitives lie within the margin of
-// each other in the surface's rest shape (a vertex and its own triangles,
-// edges sharing a vertex, neighbours on a fine mesh, a narrow modelled gap),
-// so a body at rest or falling freely has no self candidates while a body
-// that folds onto itself does. Pairs of two prescribed (static or kinematic)
+// Self-contact takes a pair of one surface only within min(margin, rest
+// distance - margin) (collision_types.h): never a pair within the margin of
+// each other in the rest shape (a vertex and its own triangles, edges
+// sharing a vertex, neighbours on a fine mesh, a narrow modelled gap), and a
+// pair just past it only once deformation has closed a margin of its rest
+// distance, not when the step's motion alone reaches it. So a body at rest
+// or falling freely has no self candidates while a body that folds onto
+// itself does. Pairs of two prescribed (static or kinematic)
 // surfaces, and prescribed surfaces against planes, are never tested.
 //
 // Closest-point weights: a vertex-triangle closest point on an edge or vertex

@@ -217,5 +217,40 @@ TEST(CollisionDetector, SelfContactSkipsNeighbours) {
   EXPECT_TRUE(detector.detect({s}, {}).empty());
 }
 
+TEST(CollisionDetector, SelfContactCountsOnlyWhatDeformationClosed) {
+  // Two layers of one surface that lie 2.5 mm apart at rest, just past the
+  // 2 mm margin (a narrow modelled gap, or neighbours on a fine mesh). A pair
+  // counts only within min(margin, rest distance - margin) = 0.5 mm.
+  const double margin = 0.002, rest_gap = 0.0025;
+  TriMesh rest = testing::grid(8, 0.01);
+  TriMesh upper = rest;
+  upper.vertices.col(2).array() += rest_gap;
+  append(rest, upper);
+  const int layer = 81;  // vertices per layer
+  auto surface_at = [&](double gap, double slide) {
+    TriMesh now = rest;
+    now.vertices.bottomRows(layer).col(2).array() += gap - rest_gap;
+    CollisionSurface s = moving_surface(now, 1, BodyKind::deformable, Eigen::Vector3d::Zero());
+    s.x1.bottomRows(layer).col(0).array() += slide;  // the upper layer slides over the lower in the step
+    s.self_contact = true;
+    s.rest = &rest.vertices;
+    return s;
+  };
+  CollisionDetector detector({margin, 1});
+  auto candidates = [&](double gap, double slide) {
+    const CollisionSurface s = surface_at(gap, slide);
+    const auto found = detector.detect({s}, {});
+    testing::expect_same_candidates(found, brute_force_candidates({s}, {}, {margin, 1}), 1e-9);
+    return found.size();
+  };
+  // Undeformed, the upper layer sliding 0.6 mm within the step: within
+  // margin + motion of the lower one, but nothing has closed.
+  EXPECT_EQ(candidates(rest_gap, 0.0006), 0u);
+  // Pressed to 1 mm: closer than the margin, but closed by less than one.
+  EXPECT_EQ(candidates(0.001, 0.0), 0u);
+  // Pressed to 0.4 mm: every upper vertex over the lower layer's interior.
+  EXPECT_GT(candidates(0.0004, 0.0), 0u);
+}
+
 }  // namespace
 }  // namespace recoil::sim
