@@ -1,4 +1,5 @@
 // `recoil info MESH [--json]`: what a mesh is made of, before anyone simulates it.
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
@@ -99,7 +100,8 @@ int run_info(const InfoOptions& options, bool resolution_given) {
                           {"inconsistent_edges", stats.inconsistent_edges},
                           {"bounds", to_json(stats.bounds)},
                           {"area", stats.area},
-                          {"volume", stats.watertight ? nlohmann::json(stats.volume) : nlohmann::json(nullptr)},
+                          {"volume", stats.watertight ? nlohmann::json(std::abs(stats.volume)) : nlohmann::json(nullptr)},
+                          {"wound_inward", stats.watertight && stats.volume < 0.0},
                           {"tetrahedra", tetrahedra},
                           {"look", look_json(mesh)}};
     // Material names come from the file as bytes; invalid UTF-8 is shown as U+FFFD.
@@ -122,7 +124,9 @@ int run_info(const InfoOptions& options, bool resolution_given) {
   text << "  bounds       [" << stats.bounds.min.transpose() << "] .. [" << stats.bounds.max.transpose() << "]\n"
        << "  size         " << size.x() << " x " << size.y() << " x " << size.z() << "\n"
        << "  area         " << stats.area << "\n";
-  if (stats.watertight) text << "  volume       " << stats.volume << "\n";
+  if (stats.watertight && stats.volume < 0.0)
+    text << "  volume       " << -stats.volume << " (its faces are wound inward: a rigid body refuses it; flip them)\n";
+  else if (stats.watertight) text << "  volume       " << stats.volume << "\n";
   else text << "  volume       - (the surface is not closed)\n";
   if (no_tets.empty())
     text << "  tetrahedra   " << tets.num_tets() << " tets, " << tets.num_nodes() << " nodes at resolution "

@@ -98,9 +98,13 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
     tet_mass += m;
     for (int k = 0; k < 4; ++k) body.mass[body.rest.tets(t, k)] += 0.25 * m;
   }
-  body.surface_volume = enclosed_volume(body.render_surface.empty() ? body.surface : body.render_surface);
+  const TriMesh& drawn = body.render_surface.empty() ? body.surface : body.render_surface;
+  body.surface_volume = enclosed_volume(drawn);
+  // A closed surface wound inward encloses minus its volume; the lattice
+  // already reads the winding number's magnitude (tetrahedralize.h).
+  if (body.surface_volume < 0.0 && compute_mesh_stats(drawn).watertight) body.surface_volume = -body.surface_volume;
   if (!(body.surface_volume > 0.0)) {
-    // An open or inward-wound surface: fall back to the tets' own volume.
+    // An open surface that bounds nothing: fall back to the tets' own volume.
     body.surface_volume = tet_mass / desc.material.density;
   }
   body.mass *= desc.material.density * body.surface_volume / tet_mass;

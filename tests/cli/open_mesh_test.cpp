@@ -4,7 +4,9 @@
 // tetrahedra a mesh would get.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "tests/cli/box_mesh_file.h"
 #include "tests/test_support.h"
@@ -35,6 +37,37 @@ TEST(OpenMesh, InfoReportsItOpenWithTheTetsOfTheClosedBox) {
   EXPECT_EQ(text.exit_code, 0);
   EXPECT_NE(text.out.find("watertight   no: open mesh (4 boundary"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("inside by winding number"), std::string::npos) << text.out;
+}
+
+TEST(OpenMesh, AClosedMeshWoundInwardKeepsItsVolumeAndMass) {
+  const fs::path dir = scratch_dir("inward_mesh");
+  const fs::path box = write_box_off(dir / "box.off", Eigen::Vector3d(-0.1, -0.1, -0.1), Eigen::Vector3d(0.1, 0.1, 0.1));
+  // The same box with every face's winding reversed.
+  std::ifstream in(box);
+  std::ofstream out(dir / "inward.off");
+  std::string line;
+  for (int n = 0; std::getline(in, line); ++n) {
+    std::istringstream words(line);
+    int count = 0, a = 0, b = 0, c = 0;
+    if (n > 1 && (words >> count >> a >> b >> c) && count == 3 && words.eof()) line = "3 " + std::to_string(a) + " " +
+        std::to_string(c) + " " + std::to_string(b);
+    out << line << "\n";
+  }
+  out.close();
+  const CommandResult r = run_recoil("info --json " + shell_quote(dir / "inward.off"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json info = json::parse(r.out);
+  EXPECT_TRUE(info["wound_inward"].get<bool>());
+  EXPECT_NEAR(info["volume"].get<double>(), 0.008, 1e-8);  // the import keeps floats
+  // A soft body of it weighs what the outward box does: density times 0.008 m^3.
+  const std::string drop = "drop --seconds 0.004 --no-render -q -o " + shell_quote(dir / "out") + " --save-scene ";
+  for (const char* name : {"box", "inward"}) {
+    const fs::path scene = dir / (std::string(name) + ".json");
+    ASSERT_EQ(run_recoil(drop + shell_quote(scene) + " " + shell_quote(dir / (std::string(name) + ".off"))).exit_code, 0);
+    const CommandResult s = run_recoil("info --json " + shell_quote(scene));
+    ASSERT_EQ(s.exit_code, 0) << s.err;
+    EXPECT_NEAR(json::parse(s.out)["bodies"][1]["mass"].get<double>(), 8.0, 1e-5) << name;
+  }
 }
 
 TEST(OpenMesh, InfoPrintsTheTetsAtTheDefaultAndAGivenResolution) {
