@@ -40,14 +40,7 @@ void add_drop_command(CLI::App& app, const GlobalOptions& global, Action& action
   cmd->add_option("--seconds", options->drop.seconds, "Simulated seconds")
       ->check(CLI::Range(0.0, 3600.0))->capture_default_str();
   add_up_option(*cmd, options->drop.up);
-  CLI::Option* triangles =
-      cmd->add_option("--collision-triangles", options->drop.collision_triangles,
-                      "Collision surface budget per body (0: the mesh itself; default: from the tet lattice)")
-          ->check(CLI::Range(0, 100000000));
-  cmd->add_option("--collision-edge", options->drop.collision_edge,
-                  "Collision surface tiled at this edge length, m (default: a quarter lattice cell, >= 2 margins)")
-      ->check(CLI::PositiveNumber)
-      ->excludes(triangles);
+  add_collision_options(*cmd, options->drop.collision);
   cmd->add_option("--save-scene", options->run.save_scene,
                   "Also write the scene built, to edit and rerun with `recoil run`");
   add_run_options(*cmd, options->run);

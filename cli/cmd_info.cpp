@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "cli/commands.h"
+#include "cli/drop_scene.h"
 #include "cli/scene_info.h"
 #include "core/error.h"
 #include "sim/fem/deformable_body.h"
@@ -65,6 +66,16 @@ std::string look_text(const nlohmann::json& look) {
   return text;
 }
 
+// The cells in file units, and as `drop` and `turntable` size the mesh when they rescale it.
+std::string scaled_cells(double size, double cell) {
+  const double scale = drop_scale(size);
+  if (scale == 1.0) return " m";
+  std::ostringstream text;
+  text << std::setprecision(3) << " file units; " << cell * scale << " m once `drop` or `turntable` scale it to "
+       << size * scale << " m";
+  return text.str();
+}
+
 int run_info(const InfoOptions& options, bool resolution_given) {
   if (std::filesystem::path(options.path).extension() == ".json") {
     if (resolution_given) throw bad_input("--resolution applies to a mesh; a scene gives each body's tets.resolution");
@@ -86,6 +97,7 @@ int run_info(const InfoOptions& options, bool resolution_given) {
   const nlohmann::json tetrahedra =
       no_tets.empty() ? nlohmann::json{{"resolution", options.resolution},
                                        {"cell_size", lattice.cell_size},
+                                       {"drop_scale", drop_scale(size.maxCoeff())},
                                        {"nodes", tets.num_nodes()},
                                        {"tets", tets.num_tets()}}
                       : nlohmann::json(nullptr);
@@ -130,7 +142,8 @@ int run_info(const InfoOptions& options, bool resolution_given) {
   else text << "  volume       - (the surface is not closed)\n";
   if (no_tets.empty())
     text << "  tetrahedra   " << tets.num_tets() << " tets, " << tets.num_nodes() << " nodes at resolution "
-         << options.resolution << " (cells of " << lattice.cell_size << " m)\n";
+         << options.resolution << " (cells of " << lattice.cell_size << scaled_cells(size.maxCoeff(), lattice.cell_size)
+         << ")\n";
   else
     text << "  tetrahedra   - (" << no_tets << ")\n";
   text << "  look         " << look_text(look_json(mesh)) << "\n";

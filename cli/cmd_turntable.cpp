@@ -46,6 +46,8 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
       ->check(CLI::Range(0.001, 3600.0))->capture_default_str()->needs(settle);
   cmd->add_option("--material", options->turntable.material, "What a settling mesh is made of (a drop preset)")
       ->check(CLI::IsMember({"soft", "rubber", "jelly", "stiff", "rigid"}))->capture_default_str()->needs(settle);
+  add_collision_options(*cmd, options->turntable.collision);
+  for (const char* name : {"--collision-triangles", "--collision-edge"}) cmd->get_option(name)->needs(settle);
   cmd->add_option("--save-scene", options->run.save_scene,
                   "Also write the scene built, to edit and rerun with `recoil run`");
   add_run_options(*cmd, options->run);
@@ -56,13 +58,15 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
       "above where it stands and simulated (not drawn) until it rests, at most --settle-seconds, so the\n"
       "physics picks its stable pose; the orbit then frames the resting mesh. Like `run`, it writes\n"
       "scene.json, stats.jsonl and run.json beside the frames, and takes --video, --resume and --no-render.\n"
-      "As in `drop`, a mesh whose longest side is outside 5 cm - 2 m is scaled to 30 cm.\n\n"
+      "As in `drop`, a mesh whose longest side is outside 5 cm - 2 m is scaled to 30 cm, and a settling\n"
+      "mesh collides through a simplified copy sized by --collision-triangles or --collision-edge.\n\n"
       "Examples:\n"
       "  recoil turntable assets/meshes/bunny.obj\n"
       "  recoil turntable model.glb --turn-frames 240 --elevation 35 --resolution 1920x1080 -o preview/\n"
       "  recoil turntable part.stl --color '#8fb3d9' --background transparent --msaa 0\n"
       "  recoil turntable bracket.stl --up +Z       # a Z-up CAD export, stood as modelled\n"
       "  recoil turntable rock.obj --settle         # lying on its most stable side\n"
+      "  recoil turntable scan.ply --settle --collision-triangles 3000   # a fine scan settles on 3000\n"
       "  recoil turntable model.glb --frames 1,31,61,91 -o views/   # four views of the 120\n"
       "  recoil turntable model.glb --video model.mp4               # needs ffmpeg\n");
   cmd->callback([options, &global, &action] {

@@ -6,6 +6,7 @@
 #include <random>
 
 #include "cli/json_cursor.h"
+#include "cli/scene_limits.h"
 #include "core/error.h"
 #include "sim/fem/deformable_body.h"
 #include "sim/geometry/mesh_import.h"
@@ -39,7 +40,7 @@ Source load_source(const std::string& path, UpAxis up, ImportedMeshes* imported)
   const sim::Aabb box = sim::bounding_box(mesh);
   const double size = box.extent().maxCoeff();
   if (!(size > 0)) throw bad_input(path + ": the mesh is flat or empty");
-  s.scale = (size >= kMinSize && size <= kMaxSize) ? 1.0 : kTargetSize / size;
+  s.scale = drop_scale(size);
   s.center = box.center();
   s.bottom = box.min.y();
   s.radius = 0.5 * s.scale * box.extent().norm();
@@ -62,6 +63,33 @@ double uniform(std::mt19937_64& rng, double lo, double hi) {
 }
 
 }  // namespace
+
+double drop_scale(double size) {
+  return !(size > 0.0) || (size >= kMinSize && size <= kMaxSize) ? 1.0 : kTargetSize / size;
+}
+
+void add_collision_options(CLI::App& command, CollisionChoice& choice) {
+  // The scene's {"triangles": N} takes 4 or more: a closed surface has at least a tetrahedron's faces.
+  const CLI::Validator budget(
+      [](std::string& text) -> std::string {
+        const long long n = std::stoll(text);
+        return n == 0 || (n >= kMinCollisionTriangles && n <= kMaxCollisionTriangles)
+                   ? std::string()
+                   : "must be 0 (the mesh itself) or " + std::to_string(kMinCollisionTriangles) + " to " +
+                         std::to_string(kMaxCollisionTriangles) + " triangles, not " + text;
+      },
+      "0 or " + std::to_string(kMinCollisionTriangles) + "-" + std::to_string(kMaxCollisionTriangles));
+  CLI::Option* triangles =
+      command
+          .add_option("--collision-triangles", choice.triangles,
+                      "Collision surface budget per body (0: the mesh itself; default: from the tet lattice)")
+          ->check(budget);
+  command
+      .add_option("--collision-edge", choice.edge,
+                  "Collision surface tiled at this edge length, m (default: a quarter lattice cell, >= 2 margins)")
+      ->check(CLI::PositiveNumber)
+      ->excludes(triangles);
+}
 
 nlohmann::json build_drop_scene(const DropSettings& settings, ImportedMeshes* imported) {
   if (settings.meshes.empty()) throw bad_input("drop: give at least one mesh");
@@ -105,9 +133,9 @@ nlohmann::json build_drop_scene(const DropSettings& settings, ImportedMeshes* im
                            {"up", to_string(settings.up)},
                            {"friction", settings.friction},
                            {"transform", {{"position", json_vec3(position)}, {"rotation", json_vec3(rotation)}, {"scale", s.scale}}}};
-    if (settings.collision_triangles == 0) body["collision"] = "mesh";
-    else if (settings.collision_triangles > 0) body["collision"] = {{"triangles", settings.collision_triangles}};
-    else if (settings.collision_edge > 0.0) body["collision"] = {{"edge_length", settings.collision_edge}};
+    if (settings.collision.triangles == 0) body["collision"] = "mesh";
+    else if (settings.collision.triangles > 0) body["collision"] = {{"triangles", settings.collision.triangles}};
+    else if (settings.collision.edge > 0.0) body["collision"] = {{"edge_length", settings.collision.edge}};
     if (settings.material == "rigid") {
       body["type"] = "rigid";
       body["density"] = 1000;

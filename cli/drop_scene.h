@@ -3,6 +3,7 @@
 // sized sensibly, one each side by side or `count` copies in a loose pile
 // (seeded, so reruns match). It is built as a scene file document so that
 // --save-scene writes exactly what runs, and `run` can rerun it.
+#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -11,6 +12,21 @@
 #include "cli/up_axis.h"
 
 namespace recoil::cli {
+
+// Every body's collision surface: at most `triangles` triangles (0: the mesh
+// itself), or tiled at `edge` m; neither (-1, 0): the scene's default.
+struct CollisionChoice {
+  int triangles = -1;
+  double edge = 0.0;
+};
+
+// `--collision-triangles N` and `--collision-edge M` (one or neither) for a
+// mesh command; a value the scene would refuse is a usage error (exit 2).
+void add_collision_options(CLI::App& command, CollisionChoice& choice);
+
+// The uniform scale `drop` and `turntable` give a mesh whose longest side is
+// `size` (file units): 1 between 5 cm and 2 m, else what makes it 30 cm.
+double drop_scale(double size);
 
 struct DropSettings {
   std::vector<std::string> meshes;
@@ -25,10 +41,7 @@ struct DropSettings {
   double seconds = 3.0;           // simulated
   unsigned seed = 1;              // of the pile's jitter and orientations
   UpAxis up = UpAxis::pos_y;      // of every mesh file; recorded in each body's "up"
-  // Every body's collision surface: at most this many triangles (0: the mesh
-  // itself), or tiled at this edge length (m); neither (-1, 0): the default.
-  int collision_triangles = -1;
-  double collision_edge = 0.0;
+  CollisionChoice collision;
 };
 
 // A scene file document with absolute mesh paths; the meshes read to size it

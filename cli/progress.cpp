@@ -59,6 +59,15 @@ void Progress::working(const std::string& detail) {
   if (due()) draw(detail);
 }
 
+void Progress::stage(const std::string& what) {
+  if (m_json) {
+    const nlohmann::json line = {{"command", m_label}, {"event", "stage"}, {"stage", what}};
+    std::fprintf(stderr, "%s\n", line.dump().c_str());
+  } else if (m_bar) {
+    draw(what);
+  }
+}
+
 void Progress::draw(const std::string& detail) {
   const auto now = std::chrono::steady_clock::now();
   m_last_draw = now;

@@ -19,6 +19,9 @@ class Progress {
   // Work inside the current item (the steps before a frame): redraws the bar
   // with `detail` at most 10 times a second, so a slow item still shows life.
   void working(const std::string& detail);
+  // A stage before the first item (building the bodies): drawn at once on a
+  // terminal, one {"event": "stage"} line with --log-json.
+  void stage(const std::string& what);
   // Whether working() would draw now (callers skip composing `detail` otherwise).
   bool due() const;
   // Clears the bar (a terminal keeps no half-drawn line).

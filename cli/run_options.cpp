@@ -136,7 +136,7 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
   } else if (!global.quiet || !warnings.empty()) {
     std::cerr << "recoil: " << job.scene.name << ": " << result.steps << " steps";
     if (job.render) {
-      std::cerr << ", wrote " << result.frames_written << " frames";
+      std::cerr << ", wrote " << result.frames_written << (result.frames_written == 1 ? " frame" : " frames");
       if (result.frames_skipped > 0) std::cerr << " (" << result.frames_skipped << " already on disk)";
     }
     std::cerr << " to " << job.output_dir.string();

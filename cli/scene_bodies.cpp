@@ -258,7 +258,7 @@ sim::CollisionSurfaceDesc parse_collision(const JsonCursor& c) {
   c.expect_object({"triangles", "edge_length"});
   if (c.has("triangles") && c.has("edge_length")) c.fail("give triangles or edge_length, not both");
   if (c.has("triangles")) {
-    out.max_triangles = c.child("triangles").integer_in(4, 100'000'000);
+    out.max_triangles = c.child("triangles").integer_in(kMinCollisionTriangles, kMaxCollisionTriangles);
   } else if (c.has("edge_length")) {
     out.edge_length = c.child("edge_length").number_in(kSizeRange);
   }
@@ -298,7 +298,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   if (out.is_plane()) {
     sim::PlaneDesc plane;
     plane.name = out.name;
-    plane.origin = {body.file(), body.pointer()};
+    plane.origin = {body.file(), body.pointer(), ""};
     plane.point = body.vec3_in_or("point", Eigen::Vector3d::Zero(), kCoordinateRange);
     plane.normal = body.vec3_in_or("normal", Eigen::Vector3d::UnitY(), kCoordinateRange);
     if (!(plane.normal.norm() > 1e-12)) body.child("normal").fail("must not be zero");
@@ -327,7 +327,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   if (kind == sim::BodyKind::deformable) {
     sim::DeformableBodyDesc d;
     d.name = out.name;
-    d.origin = {body.file(), body.pointer()};
+    d.origin = {body.file(), body.pointer(), geometry.file.empty() ? "" : geometry.file.string()};
     d.transform = transform;
     d.static_friction = friction.static_coefficient;
     d.kinetic_friction = friction.kinetic_coefficient;
@@ -376,7 +376,7 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   } else {
     sim::RigidBodyDesc r;
     r.name = out.name;
-    r.origin = {body.file(), body.pointer()};
+    r.origin = {body.file(), body.pointer(), geometry.file.empty() ? "" : geometry.file.string()};
     r.kind = *kind;
     r.mesh = std::move(geometry.surface);
     r.transform = transform;

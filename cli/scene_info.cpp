@@ -59,6 +59,7 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
       const Eigen::Matrix3d rotation = body.rotation();
       const sim::Points& drawn = body.render_local.rows() > 0 ? body.render_local : body.local;
       row["collision_below"] = collision_below(drawn * rotation.transpose(), body.local * rotation.transpose(), up);
+      if (b.kind == sim::BodyKind::rigid) row["mass"] = body.mass;
     }
     if (!b.is_plane()) row["open_mesh"] = b.open_mesh;
     bodies.push_back(row);
@@ -101,7 +102,8 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
            << row["collision_offset"].get<double>() * 1e3 << " mm, " << row["collision_below"].get<double>() * 1e3
            << " mm below it)";
     if (row.contains("tets"))
-      text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes, mass " << row["mass"].get<double>() << " kg";
+      text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes";
+    if (row.contains("mass")) text << ", mass " << row["mass"].get<double>() << " kg";
     if (row.value("open_mesh", false)) text << " (open mesh: inside by winding number)";
     text << "\n";
   }

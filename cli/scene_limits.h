@@ -37,6 +37,10 @@ inline constexpr Range kFrictionRange{0.0, 10.0};           // Coulomb coefficie
 inline constexpr Range kCameraDistanceRange{1e-3, 1e5};     // m from the target
 inline constexpr Range kTurnsRange{-1e4, 1e4};              // orbit turns over the run
 
+// A collision surface's triangle budget ({"triangles": N}, --collision-triangles):
+// at least a tetrahedron's four faces.
+inline constexpr int kMinCollisionTriangles = 4, kMaxCollisionTriangles = 100'000'000;
+
 inline constexpr long kMaxSteps = 100'000'000;   // duration / dt: days of work on the smallest scene
 inline constexpr int kMaxFrames = 1'000'000;     // duration * fps + 1
 inline constexpr int kMaxIterations = 1'000'000; // the solver's cap per step

@@ -20,7 +20,7 @@ constexpr CameraMode kCameraModes[] = {CameraMode::fixed, CameraMode::orbit, Cam
 void parse_simulation(const JsonCursor& c, SceneDesc& scene) {
   c.expect_object({"dt", "duration", "settle", "gravity", "solver", "contact"});
   sim::WorldDesc& w = scene.world;
-  w.origin = {c.file(), c.pointer()};
+  w.origin = {c.file(), c.pointer(), ""};
   w.dt = c.number_in_or("dt", w.dt, kTimeStepRange);
   scene.duration = c.number_in_or("duration", 3.0, kDurationRange);
   scene.settle = c.number_in_or("settle", 0.0, kDurationRange);

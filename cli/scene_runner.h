@@ -41,6 +41,9 @@ struct RunResult {
   std::string message;      // what failed, or what interrupted the run
   SolveQuality quality;
   std::vector<std::string> open_meshes;  // bodies from mesh files that are not watertight, scene order
+  // Bodies of open meshes that enclose no lattice cell, with their mass (kg):
+  // simulated as the layer of cells their surface crosses.
+  std::vector<std::pair<std::string, double>> cell_layers;
   std::vector<std::string> look_warnings;  // "FILE: ..." for the looks drawn without something (a texture)
   double settle_limit = 0.0;  // s: the scene's settle
   double settle_time = 0.0;   // s: simulated before frame 1

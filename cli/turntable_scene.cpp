@@ -16,6 +16,7 @@ nlohmann::json build_turntable_scene(const TurntableSettings& settings, Imported
   drop.height = 0.0;
   drop.height_per_size = settings.settle > 0.0 ? 0.1 : 0.0;
   drop.up = settings.up;
+  drop.collision = settings.collision;
   drop.seconds = (settings.turn_frames - 1) / settings.fps;
   nlohmann::json scene = build_drop_scene(drop, imported);
   scene["name"] = std::filesystem::path(settings.mesh).stem().string();

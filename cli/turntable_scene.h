@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "cli/drop_scene.h"
 #include "cli/imported_meshes.h"
 #include "cli/up_axis.h"
 
@@ -20,6 +21,7 @@ struct TurntableSettings {
   UpAxis up = UpAxis::pos_y;
   double settle = 0.0;            // s at most before the orbit; 0: the mesh is static
   std::string material = "rigid"; // of a settling mesh: a `drop` preset
+  CollisionChoice collision;      // of a settling mesh
 };
 
 // A scene file document with an absolute mesh path; the mesh read to size it

@@ -49,13 +49,17 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
   body.material = desc.material;
   body.lame = lame_parameters(desc.material.youngs_modulus, desc.material.poisson_ratio);
 
+  // Whether the mesh is closed, which a transform does not change.
+  const bool watertight = desc.mesh.empty() || compute_mesh_stats(desc.mesh).watertight;
   // Local rest shape, then the initial transform on both tets and surface.
   if (desc.tets.empty()) {
     try {
-      body.rest = tetrahedralize(device, desc.mesh, desc.resolution);
+      TetrahedralizeStats lattice;
+      body.rest = tetrahedralize(desc.mesh, desc.resolution, &lattice);
+      body.bounds_no_cell = bounds_no_cell(watertight, lattice);
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::bad_input) throw;
-      throw bad_input(where + ": " + e.what());
+      throw bad_input(desc.origin.mesh_field(where) + ": " + e.what());
     }
   } else {
     body.rest = desc.tets;
@@ -102,9 +106,10 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
   body.surface_volume = enclosed_volume(drawn);
   // A closed surface wound inward encloses minus its volume; the lattice
   // already reads the winding number's magnitude (tetrahedralize.h).
-  if (body.surface_volume < 0.0 && compute_mesh_stats(drawn).watertight) body.surface_volume = -body.surface_volume;
-  if (!(body.surface_volume > 0.0)) {
-    // An open surface that bounds nothing: fall back to the tets' own volume.
+  if (body.surface_volume < 0.0 && watertight) body.surface_volume = -body.surface_volume;
+  if (body.bounds_no_cell || !(body.surface_volume > 0.0)) {
+    // An open surface that bounds nothing (its signed volume then depends on
+    // where the origin is): the tets' own volume, as a rigid body's.
     body.surface_volume = tet_mass / desc.material.density;
   }
   body.mass *= desc.material.density * body.surface_volume / tet_mass;

@@ -35,6 +35,13 @@ inline TetMesh tetrahedralize(EmbreeDevice& /*device*/, const TriMesh& surface, 
   return tetrahedralize(surface, resolution, stats);
 }
 
+// An open surface whose winding number fills no cell (a flat sheet, a shell
+// thinner than a cell) bounds nothing: its solid is only the cells it crosses,
+// a layer one cell thick whose mass the mesh does not say.
+inline bool bounds_no_cell(bool watertight, const TetrahedralizeStats& stats) {
+  return !watertight && stats.cells_inside == 0;
+}
+
 // The inside test alone: |winding number| > 1/2.
 bool inside_by_winding_number(double winding_number);
 

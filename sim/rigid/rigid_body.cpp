@@ -25,8 +25,8 @@ double RigidBody::kinetic_energy() const {
 RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin) {
   if (desc.kind == BodyKind::deformable)
     throw bad_input(where + ": a rigid body description is rigid, kinematic or fixed, not deformable");
-  if (desc.mesh.empty()) throw bad_input(where + "/mesh: a rigid body needs a surface");
-  if (!desc.mesh.vertices.allFinite()) throw bad_input(where + "/mesh: vertices must be finite");
+  if (desc.mesh.empty()) throw bad_input(desc.origin.mesh_field(where) + ": a rigid body needs a surface");
+  if (!desc.mesh.vertices.allFinite()) throw bad_input(desc.origin.mesh_field(where) + ": vertices must be finite");
   if (!desc.transform.position.allFinite() || !desc.transform.rotation.allFinite() || !desc.velocity.allFinite() ||
       !desc.angular_velocity.allFinite())
     throw bad_input(where + ": transform, velocity and angular_velocity must be finite");
@@ -52,10 +52,12 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
     // A surface that is not closed bounds no volume by itself: its solid is
     // the lattice its winding number fills, as a deformable body's would be.
     const bool closed = compute_mesh_stats(mesh).watertight;
+    TetrahedralizeStats lattice;
     const MassProperties props = closed ? mass_properties(mesh, desc.density)
-                                        : mass_properties(tetrahedralize(mesh, kDefaultResolution), desc.density);
+                                        : mass_properties(tetrahedralize(mesh, kDefaultResolution, &lattice), desc.density);
+    body.bounds_no_cell = bounds_no_cell(closed, lattice);
     if (!(props.volume > 0.0))
-      throw bad_input(where + "/mesh: " +
+      throw bad_input(desc.origin.mesh_field(where) + ": " +
                       (closed ? "the closed surface encloses " + std::to_string(props.volume) +
                                     " m^3: its faces are wound inward; flip them"
                               : std::string("the surface encloses no volume")));

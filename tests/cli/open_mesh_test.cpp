@@ -4,6 +4,7 @@
 // tetrahedra a mesh would get.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
@@ -136,6 +137,51 @@ TEST(OpenMesh, AssimpSphereWithAHoleDrops) {
   const CommandResult r = run_recoil("drop " + shell_quote(sphere) + " --seconds 0.2 --no-render -o " + shell_quote(dir));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_NE(r.err.find("open mesh: 'sphereWithHole'"), std::string::npos) << r.err;
+}
+
+
+// A flat open sheet encloses nothing: whether it is soft or rigid, and
+// wherever it lies, it weighs the one-cell layer of lattice cells it crosses,
+// and the summary says so.
+TEST(OpenMesh, AFlatSheetIsNamedAndWeighsTheCellsItCrosses) {
+  const fs::path dir = scratch_dir("flat_sheet");
+  // 0.3 m square at y = 0.5 (a signed volume would read 0.5 * 0.09 / 3 m^3 there).
+  const fs::path sheet = dir / "sheet.off";
+  std::ofstream(sheet) << "OFF\n4 2 0\n0 0.5 0\n0.3 0.5 0\n0.3 0.5 0.3\n0 0.5 0.3\n3 0 1 2\n3 0 2 3\n";
+  // 8 x 8 cells of 0.0375 m crossed, density 1000 (soft) and 1000 (rigid).
+  const double layer_mass = 64 * std::pow(0.3 / 8, 3) * 1000.0;
+  for (const char* material : {"soft", "rigid"}) {
+    const fs::path scene = dir / (std::string(material) + ".json");
+    const CommandResult r = run_recoil("drop " + shell_quote(sheet) + " --material " + material +
+                                       " --seconds 0.01 --no-render -o " + shell_quote(dir / material) +
+                                       " --save-scene " + shell_quote(scene));
+    ASSERT_EQ(r.exit_code, 0) << r.err;
+    EXPECT_NE(r.err.find("'sheet' encloses no lattice cell (flat, or thinner than a cell): simulated as the one-cell "
+                         "layer its surface crosses, 3.38 kg"),
+              std::string::npos)
+        << material << ": " << r.err;
+    const CommandResult info = run_recoil("info --json " + shell_quote(scene));
+    ASSERT_EQ(info.exit_code, 0) << info.err;
+    EXPECT_NEAR(json::parse(info.out)["bodies"][1]["mass"].get<double>(), layer_mass, 1e-6 * layer_mass) << material;
+  }
+  // A closed box encloses cells: no such warning.
+  const fs::path box = write_box_off(dir / "box.off", Eigen::Vector3d(-0.1, -0.1, -0.1), Eigen::Vector3d(0.1, 0.1, 0.1));
+  const CommandResult closed = run_recoil("drop " + shell_quote(box) + " --seconds 0.01 --no-render -o " + shell_quote(dir / "box"));
+  ASSERT_EQ(closed.exit_code, 0) << closed.err;
+  EXPECT_EQ(closed.err.find("encloses no lattice cell"), std::string::npos) << closed.err;
+}
+
+TEST(OpenMesh, ARigidBodyWoundInwardIsRefusedNamingTheMeshFile) {
+  const fs::path dir = scratch_dir("inward_rigid");
+  const fs::path inward = write_box_off(dir / "inward.off", Eigen::Vector3d(-0.1, -0.1, -0.1), Eigen::Vector3d(0.1, 0.1, 0.1),
+                                        false, [](const Eigen::Vector3d& p) { return Eigen::Vector3d(p.x(), p.y(), -p.z()); });
+  const CommandResult r =
+      run_recoil("drop " + shell_quote(inward) + " --material rigid --seconds 0.01 --no-render -o " + shell_quote(dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("/bodies/1/mesh (" + fs::absolute(inward).lexically_normal().string() + "): the closed surface"),
+            std::string::npos)
+      << r.err;
+  EXPECT_NE(r.err.find("wound inward"), std::string::npos) << r.err;
 }
 
 }  // namespace recoil::test
