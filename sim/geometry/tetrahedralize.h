@@ -35,9 +35,9 @@ inline TetMesh tetrahedralize(EmbreeDevice& /*device*/, const TriMesh& surface, 
   return tetrahedralize(surface, resolution, stats);
 }
 
-// An open surface whose winding number fills no cell (a flat sheet, a shell
-// thinner than a cell) bounds nothing: its solid is only the cells it crosses,
-// a layer one cell thick whose mass the mesh does not say.
+// An open surface with no cell inside it (a flat sheet, a part thinner than a
+// cell everywhere) bounds nothing the mesh says: its solid is only the cells
+// it crosses, and its mass theirs.
 inline bool bounds_no_cell(bool watertight, const TetrahedralizeStats& stats) {
   return !watertight && stats.cells_inside == 0;
 }
