@@ -17,6 +17,7 @@
 #include <thread>
 
 #include "cli/interrupt.h"
+#include "cli/item_lock.h"
 #include "cli/output_dir.h"
 #include "cli/progress.h"
 #include "core/error.h"
@@ -29,6 +30,7 @@ struct Running {
   const BatchItem* item;
   fs::path partial;
   std::chrono::steady_clock::time_point start;
+  ItemLock lock;  // released once the item has stopped and its folder is in place
 };
 
 // The item's command line, with its output folder and its share of the cores.
@@ -41,9 +43,9 @@ std::vector<std::string> child_arguments(const BatchItem& item, const fs::path& 
   return args;
 }
 
-// Starts `recoil ARGS` with stderr to `log` (stdin and stdout closed off);
-// it is stopped with SIGTERM if this process dies first.
-pid_t start_child(const std::vector<std::string>& args, const fs::path& log, int threads) {
+// Starts `recoil ARGS` with stderr to `log` (stdin and stdout closed off),
+// holding `lock`; it is stopped with SIGTERM if this process dies first.
+pid_t start_child(const std::vector<std::string>& args, const fs::path& log, int threads, const ItemLock& lock) {
   std::vector<std::string> line = {"recoil"};
   line.insert(line.end(), args.begin(), args.end());
   std::vector<char*> argv;
@@ -56,6 +58,7 @@ pid_t start_child(const std::vector<std::string>& args, const fs::path& log, int
   if (pid == 0) {
     ::prctl(PR_SET_PDEATHSIG, SIGTERM);
     if (::getppid() != parent) ::_exit(143);  // the batch died before the line above took effect
+    lock.inherit();
     const int null = ::open("/dev/null", O_RDWR);
     const int err = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0666);
     if (null < 0 || err < 0) ::_exit(4);
@@ -141,14 +144,28 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
   std::map<pid_t, Running> running;
   int done = static_cast<int>(records.size());
   while (!todo.empty() || !running.empty()) {
-    while (!todo.empty() && static_cast<int>(running.size()) < jobs && !pending_interrupt()) {
+    // An item another process holds (an orphan of a killed batch, another
+    // shard) waits at the back of the queue; once claimed, it may turn out done.
+    for (size_t held = 0; held < todo.size() && static_cast<int>(running.size()) < jobs && !pending_interrupt();) {
       const BatchItem& item = *todo.front();
       todo.pop_front();
+      std::optional<ItemLock> lock = ItemLock::try_take(options.output, item.name);
+      if (!lock) {
+        todo.push_back(&item);
+        ++held;
+        continue;
+      }
+      held = 0;
+      if (const std::optional<ItemRecord> r = read_item_record(options.output / item.name); r && r->succeeded()) {
+        records[item.index] = *r;
+        progress.update(++done);
+        continue;
+      }
       const fs::path partial = options.output / (item.name + ".partial");
       remove_or_throw(partial);  // what a killed run left
       ensure_output_dir(partial);
-      const pid_t pid = start_child(child_arguments(item, partial, threads), partial / "log.txt", threads);
-      running[pid] = {&item, partial, std::chrono::steady_clock::now()};
+      const pid_t pid = start_child(child_arguments(item, partial, threads), partial / "log.txt", threads, *lock);
+      running.emplace(pid, Running{&item, partial, std::chrono::steady_clock::now(), std::move(*lock)});
     }
     if (pending_interrupt()) {
       for (const auto& [pid, run] : running) ::kill(pid, SIGTERM);
@@ -161,7 +178,10 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
     int status = 0;
     const pid_t pid = ::waitpid(-1, &status, WNOHANG);
     if (pid <= 0) {
-      if (progress.due()) progress.working(std::to_string(running.size()) + " running");
+      if (progress.due())
+        progress.working(running.empty() ? "waiting for another process to finish " + std::to_string(todo.size()) +
+                                               (todo.size() == 1 ? " item" : " items")
+                                         : std::to_string(running.size()) + " running");
       std::this_thread::sleep_for(std::chrono::milliseconds(20));
       continue;
     }

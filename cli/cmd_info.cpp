@@ -14,6 +14,7 @@
 #include "sim/geometry/mesh_import.h"
 #include "sim/geometry/mesh_stats.h"
 #include "sim/geometry/tetrahedralize.h"
+#include "sim/geometry/winding_solid.h"
 
 namespace recoil::cli {
 namespace {
@@ -101,6 +102,8 @@ int run_info(const InfoOptions& options, bool resolution_given) {
                                        {"nodes", tets.num_nodes()},
                                        {"tets", tets.num_tets()}}
                       : nlohmann::json(nullptr);
+  // An open surface's solid is where its winding number says inside.
+  const double volume = stats.watertight ? std::abs(stats.volume) : sim::winding_solid(mesh).volume();
   if (options.json) {
     nlohmann::json out = {{"file", options.path},
                           {"vertices", stats.vertices},
@@ -112,7 +115,7 @@ int run_info(const InfoOptions& options, bool resolution_given) {
                           {"inconsistent_edges", stats.inconsistent_edges},
                           {"bounds", to_json(stats.bounds)},
                           {"area", stats.area},
-                          {"volume", stats.watertight ? nlohmann::json(std::abs(stats.volume)) : nlohmann::json(nullptr)},
+                          {"volume", volume},
                           {"wound_inward", stats.watertight && stats.volume < 0.0},
                           {"tetrahedra", tetrahedra},
                           {"look", look_json(mesh)}};
@@ -139,7 +142,12 @@ int run_info(const InfoOptions& options, bool resolution_given) {
   if (stats.watertight && stats.volume < 0.0)
     text << "  volume       " << -stats.volume << " (its faces are wound inward: a rigid body refuses it; flip them)\n";
   else if (stats.watertight) text << "  volume       " << stats.volume << "\n";
-  else text << "  volume       - (the surface is not closed)\n";
+  else if (volume > 0.0)
+    text << "  volume       " << volume << " (inside by winding number, on a grid of " << sim::kWeighingResolution
+         << " cells along the longest side)\n";
+  else
+    text << "  volume       0 (it encloses nothing: a sheet, or parts thinner than 1/" << sim::kWeighingResolution
+         << " of its longest side; a body of it weighs the lattice cells it crosses)\n";
   if (no_tets.empty())
     text << "  tetrahedra   " << tets.num_tets() << " tets, " << tets.num_nodes() << " nodes at resolution "
          << options.resolution << " (cells of " << lattice.cell_size << scaled_cells(size.maxCoeff(), lattice.cell_size)

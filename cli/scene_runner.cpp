@@ -29,6 +29,7 @@
 #include "render/png_probe.h"
 #include "render/refused_setting.h"
 #include "render/renderer.h"
+#include "sim/geometry/winding_solid.h"
 #include "sim/world.h"
 
 namespace recoil::cli {
@@ -102,8 +103,8 @@ std::string describe_run_warnings(const RunResult& result) {
     if (result.look_warnings.size() > 1) text += " (and " + std::to_string(result.look_warnings.size() - 1) + " more in run.json)";
   }
   for (const auto& [name, mass] : result.cell_layers)
-    text += std::string(text.empty() ? "" : "; ") + "'" + name + "' is open and no lattice cell lies inside it (a sheet, or parts thinner than a cell): " +
-            "its solid is the cells its surface crosses, " + format_number("%.3g", mass) + " kg";
+    text += std::string(text.empty() ? "" : "; ") + "'" + name + "' is open and encloses nothing (a sheet, or parts thinner than 1/" +
+            std::to_string(sim::kWeighingResolution) + " of its longest side): its solid is the lattice cells its surface crosses, " + format_number("%.3g", mass) + " kg";
   if (result.open_meshes.empty()) return text;
   text += std::string(text.empty() ? "" : "; ") + (result.open_meshes.size() == 1 ? "open mesh: " : "open meshes: ");
   // A pile of a thousand copies names three of them and counts the rest.
@@ -181,10 +182,10 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       result.open_meshes.push_back(body.name);
   }
   for (int i = 0; i < world->num_deformable_bodies(); ++i)
-    if (const sim::DeformableBody& b = world->deformable_body(i); b.bounds_no_cell)
+    if (const sim::DeformableBody& b = world->deformable_body(i); b.encloses_nothing)
       result.cell_layers.emplace_back(b.name, b.mass.sum());
   for (int i = 0; i < world->num_rigid_bodies(); ++i)
-    if (const sim::RigidBody& b = world->rigid_body(i); b.bounds_no_cell) result.cell_layers.emplace_back(b.name, b.mass);
+    if (const sim::RigidBody& b = world->rigid_body(i); b.encloses_nothing) result.cell_layers.emplace_back(b.name, b.mass);
   // A look nobody sees (every body of the file painted by a colour) warns of nothing.
   for (const auto& [file, warning] : scene.look_warnings)
     if (std::any_of(scene.bodies.begin(), scene.bodies.end(),

@@ -9,6 +9,7 @@
 #include "sim/geometry/boundary.h"
 #include "sim/geometry/mesh_stats.h"
 #include "sim/geometry/tetrahedralize.h"
+#include "sim/geometry/winding_solid.h"
 
 namespace recoil::sim {
 
@@ -54,9 +55,7 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
   // Local rest shape, then the initial transform on both tets and surface.
   if (desc.tets.empty()) {
     try {
-      TetrahedralizeStats lattice;
-      body.rest = tetrahedralize(desc.mesh, desc.resolution, &lattice);
-      body.bounds_no_cell = bounds_no_cell(watertight, lattice);
+      body.rest = tetrahedralize(desc.mesh, desc.resolution);
     } catch (const Error& e) {
       if (e.kind() != ErrorKind::bad_input) throw;
       throw bad_input(desc.origin.mesh_field(where) + ": " + e.what());
@@ -103,15 +102,14 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
     for (int k = 0; k < 4; ++k) body.mass[body.rest.tets(t, k)] += 0.25 * m;
   }
   const TriMesh& drawn = body.render_surface.empty() ? body.surface : body.render_surface;
-  body.surface_volume = enclosed_volume(drawn);
   // A closed surface wound inward encloses minus its volume; the lattice
-  // already reads the winding number's magnitude (tetrahedralize.h).
-  if (body.surface_volume < 0.0 && watertight) body.surface_volume = -body.surface_volume;
-  if (body.bounds_no_cell || !(body.surface_volume > 0.0)) {
-    // An open surface that bounds nothing (its signed volume then depends on
-    // where the origin is): the tets' own volume, as a rigid body's.
-    body.surface_volume = tet_mass / desc.material.density;
-  }
+  // already reads the winding number's magnitude (tetrahedralize.h). An open
+  // one's signed volume counts its holes as cones from the centre of its
+  // bounds: its solid is where its winding number says inside, and one that
+  // encloses nothing weighs its tets.
+  body.surface_volume = watertight ? std::abs(enclosed_volume(drawn)) : winding_solid(drawn).volume();
+  body.encloses_nothing = !(body.surface_volume > 0.0);
+  if (body.encloses_nothing) body.surface_volume = tet_mass / desc.material.density;
   body.mass *= desc.material.density * body.surface_volume / tet_mass;
 
   body.pinned.assign(static_cast<size_t>(body.num_nodes), 0);

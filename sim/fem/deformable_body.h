@@ -61,7 +61,7 @@ struct DeformableBody {
   Eigen::VectorXd mass;          // #nodes lumped masses, kg
   std::vector<char> pinned;      // #nodes
   double surface_volume = 0.0;   // m^3 enclosed by the surface (mass = density * this)
-  bool bounds_no_cell = false;   // tetrahedralize.h: an open mesh simulated as the cells it crosses
+  bool encloses_nothing = false;  // winding_solid.h: an open mesh whose mass is that of the lattice cells it crosses
   TriMesh surface;               // rest collision surface (what contact sees)
   Embedding embedding;           // its vertices in the tets
   // The imported mesh when the collision surface is a simplified copy of it

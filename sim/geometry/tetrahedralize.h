@@ -35,13 +35,6 @@ inline TetMesh tetrahedralize(EmbreeDevice& /*device*/, const TriMesh& surface, 
   return tetrahedralize(surface, resolution, stats);
 }
 
-// An open surface with no cell inside it (a flat sheet, a part thinner than a
-// cell everywhere) bounds nothing the mesh says: its solid is only the cells
-// it crosses, and its mass theirs.
-inline bool bounds_no_cell(bool watertight, const TetrahedralizeStats& stats) {
-  return !watertight && stats.cells_inside == 0;
-}
-
 // The inside test alone: |winding number| > 1/2.
 bool inside_by_winding_number(double winding_number);
 

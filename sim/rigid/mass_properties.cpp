@@ -66,4 +66,19 @@ MassProperties mass_properties(const TetMesh& solid, double density) {
   return from_moments(volume, first, second, density);
 }
 
+MassProperties mass_properties(const WindingSolid& solid, double density) {
+  // Per cube of side h about centre c: volume h^3, first moment h^3 c, second
+  // moment h^3 (c c^T + h^2/12 1).
+  const double v = solid.cell * solid.cell * solid.cell;
+  Eigen::Vector3d first = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d outer = Eigen::Matrix3d::Zero();
+  for (const Eigen::Vector3d& c : solid.centers) {
+    first += c;
+    outer += c * c.transpose();
+  }
+  const double count = static_cast<double>(solid.centers.size());
+  const Eigen::Matrix3d second = v * (outer + count * solid.cell * solid.cell / 12.0 * Eigen::Matrix3d::Identity());
+  return from_moments(solid.volume(), v * first, second, density);
+}
+
 }  // namespace recoil::sim

@@ -7,6 +7,7 @@
 
 #include "sim/geometry/tet_mesh.h"
 #include "sim/geometry/tri_mesh.h"
+#include "sim/geometry/winding_solid.h"
 
 namespace recoil::sim {
 
@@ -20,7 +21,9 @@ struct MassProperties {
 // mesh: #V by 3 vertices, #F by 3 triangles (closed). density in kg/m^3.
 MassProperties mass_properties(const TriMesh& mesh, double density);
 // The same for the solid a tet mesh fills (positively oriented tets), e.g.
-// the lattice a surface that is not closed gets by its winding number.
+// the lattice cells an open surface that encloses nothing crosses.
 MassProperties mass_properties(const TetMesh& solid, double density);
+// The same for the grid cells an open surface's winding number fills.
+MassProperties mass_properties(const WindingSolid& solid, double density);
 
 }  // namespace recoil::sim

@@ -50,12 +50,18 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
   if (desc.kind == BodyKind::rigid) {
     if (!(desc.density > 0.0) || !std::isfinite(desc.density)) throw bad_input(where + "/density: must be > 0");
     // A surface that is not closed bounds no volume by itself: its solid is
-    // the lattice its winding number fills, as a deformable body's would be.
+    // where its winding number says inside (winding_solid.h), as a deformable
+    // body's; one that encloses nothing weighs the lattice cells it crosses.
     const bool closed = compute_mesh_stats(mesh).watertight;
-    TetrahedralizeStats lattice;
-    const MassProperties props = closed ? mass_properties(mesh, desc.density)
-                                        : mass_properties(tetrahedralize(mesh, kDefaultResolution, &lattice), desc.density);
-    body.bounds_no_cell = bounds_no_cell(closed, lattice);
+    MassProperties props;
+    if (closed) {
+      props = mass_properties(mesh, desc.density);
+    } else {
+      const WindingSolid solid = winding_solid(mesh);
+      body.encloses_nothing = solid.centers.empty();
+      props = body.encloses_nothing ? mass_properties(tetrahedralize(mesh, kDefaultResolution), desc.density)
+                                    : mass_properties(solid, desc.density);
+    }
     if (!(props.volume > 0.0))
       throw bad_input(desc.origin.mesh_field(where) + ": " +
                       (closed ? "the closed surface encloses " + std::to_string(props.volume) +

@@ -41,7 +41,7 @@ struct RigidBody {
   std::shared_ptr<const SurfaceLook> look;  // of what is drawn (render_triangles, else triangles); null: plain
   double collision_deviation = 0.0;  // m: the outward offset of a simplified collision surface
   double mass = 0.0;                                      // kg (dynamic only)
-  bool bounds_no_cell = false;  // tetrahedralize.h: an open mesh whose mass is that of the cells it crosses
+  bool encloses_nothing = false;  // winding_solid.h: an open mesh whose mass is that of the lattice cells it crosses
   Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();      // kg m^2, body frame, about the centre of mass
   FrictionDesc friction;
   RigidPose pose;

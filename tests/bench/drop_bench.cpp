@@ -99,7 +99,11 @@ void drop_bench() {
   fs::create_directories(dir);
   std::vector<std::pair<std::string, fs::path>> meshes = {
       {"bunny (assets)", fs::path(RECOIL_SOURCE_DIR) / "assets/meshes/bunny.obj"},
-      {"human.zae (assimp-testmodels)", "/usr/share/assimp/models/Collada/human.zae"}};
+      {"duck.dae (assimp-testmodels)", "/usr/share/assimp/models/Collada/duck.dae"},
+      {"human.zae (assimp-testmodels)", "/usr/share/assimp/models/Collada/human.zae"},
+      // 86 open CAD shells, many a few millimetres apart once scaled to 0.3 m.
+      {"2CylinderEngine.glb (assimp-testmodels)",
+       "/usr/share/assimp/models/glTF2/2CylinderEngine-glTF-Binary/2CylinderEngine.glb"}};
   // The same 0.3 m sphere from 1 280 to 1.3 M triangles: the coarse one is
   // the shape's own cost, below any simplification.
   for (int level : {3, 6, 7, 8}) {

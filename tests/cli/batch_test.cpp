@@ -1,8 +1,11 @@
 // `recoil batch` end to end: a folder of real meshes from assimp-testmodels,
 // restarts (after a kill -9 too), shards, manifest errors and the contact sheet.
 #include <gtest/gtest.h>
+#include <fcntl.h>
 #include <signal.h>
+#include <sys/file.h>
 #include <sys/wait.h>
+#include <unistd.h>
 
 #include <chrono>
 #include <fstream>
@@ -185,6 +188,47 @@ TEST(BatchCommand, KillNineAtSeveralMomentsLosesOnlyTheItemsInFlight) {
   EXPECT_GT(whole.size(), 5u);
   EXPECT_TRUE(whole == resumed) << whole.size() << " frames uninterrupted, " << resumed.size() << " after the kills";
   for (int i = 0; i < 5; ++i) EXPECT_FALSE(fs::exists(dir / ("out/b" + std::to_string(i) + ".partial"))) << i;
+}
+
+// An item another process holds (here the test, as an orphaned item of a
+// killed batch would) is not touched until it is let go; the rest run meanwhile.
+TEST(BatchCommand, AnItemHeldByAnotherProcessWaitsUntilItIsLetGo) {
+  const fs::path dir = scratch_dir("batch_held_item");
+  json items = json::array();
+  for (int i = 0; i < 2; ++i)
+    items.push_back({{"mesh", source_path("assets/meshes/bunny.obj").string()}, {"mode", "drop"},
+                     {"material", "rigid"}, {"seconds", 0.1}, {"resolution", "64x48"},
+                     {"name", "b" + std::to_string(i)}});
+  write_text(dir / "m.json", items.dump());
+  fs::create_directories(dir / "out/.recoil-locks");
+  const int held = ::open((dir / "out/.recoil-locks/b0").c_str(), O_RDWR | O_CREAT, 0666);
+  ASSERT_GE(held, 0);
+  ASSERT_EQ(::flock(held, LOCK_EX | LOCK_NB), 0);
+  fs::create_directories(dir / "out/b0.partial");  // what the holder is still writing
+  write_text(dir / "out/b0.partial/frame_0001.png", "still being written");
+  const pid_t pid = ::fork();
+  ASSERT_GE(pid, 0);
+  if (pid == 0) {
+    ::close(held);
+    const int null = ::open("/dev/null", O_WRONLY);
+    ::dup2(null, 2);
+    ::execl(RECOIL_BINARY, "recoil", "batch", (dir / "m.json").c_str(), "-o", (dir / "out").c_str(), nullptr);
+    ::_exit(127);
+  }
+  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(60);
+  while (!fs::exists(dir / "out/b1/item.json") && std::chrono::steady_clock::now() < deadline)
+    std::this_thread::sleep_for(std::chrono::milliseconds(10));
+  ASSERT_TRUE(fs::exists(dir / "out/b1/item.json"));
+  std::this_thread::sleep_for(std::chrono::milliseconds(200));
+  EXPECT_EQ(file_bytes(dir / "out/b0.partial/frame_0001.png"), "still being written");
+  EXPECT_FALSE(fs::exists(dir / "out/b0"));
+  ::close(held);
+  int status = 0;
+  ASSERT_EQ(::waitpid(pid, &status, 0), pid);
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  EXPECT_TRUE(fs::exists(dir / "out/b0/item.json"));
+  EXPECT_FALSE(fs::exists(dir / "out/b0.partial"));
 }
 
 TEST(BatchCommand, FourShardsGiveExactlyTheUnshardedRun) {
