@@ -103,8 +103,11 @@ std::string describe_run_warnings(const RunResult& result) {
     if (result.look_warnings.size() > 1) text += " (and " + std::to_string(result.look_warnings.size() - 1) + " more in run.json)";
   }
   for (const auto& [name, mass] : result.cell_layers)
-    text += std::string(text.empty() ? "" : "; ") + "'" + name + "' is open and encloses nothing (a sheet, or parts thinner than 1/" +
-            std::to_string(sim::kWeighingResolution) + " of its longest side): its solid is the lattice cells its surface crosses, " + format_number("%.3g", mass) + " kg";
+    text += std::string(text.empty() ? "" : "; ") + "'" + name +
+            "' is open and encloses nothing (a sheet, or parts thinner than 1/" +
+            std::to_string(sim::kWeighingResolution) +
+            " of its longest side): its solid is the lattice cells its surface crosses, " +
+            format_number("%.3g", mass) + " kg";
   if (result.open_meshes.empty()) return text;
   text += std::string(text.empty() ? "" : "; ") + (result.open_meshes.size() == 1 ? "open mesh: " : "open meshes: ");
   // A pile of a thousand copies names three of them and counts the rest.

@@ -41,6 +41,15 @@ bool triangle_overlaps_box(const Eigen::Vector3d& a, const Eigen::Vector3d& b, c
   return true;
 }
 
+CubicGrid cubic_grid(const Aabb& box, int resolution) {
+  CubicGrid grid;
+  grid.cell = box.extent().maxCoeff() / resolution;
+  for (int a = 0; a < 3; ++a)
+    grid.cells[a] = std::max(1, static_cast<int>(std::ceil(box.extent()[a] / grid.cell - 1e-9)));
+  grid.origin = box.center() - 0.5 * grid.cell * grid.cells.cast<double>();
+  return grid;
+}
+
 bool inside_by_winding_number(double winding_number) { return std::abs(winding_number) > 0.5; }
 
 TetMesh tetrahedralize(const TriMesh& surface, int resolution, TetrahedralizeStats* stats) {
@@ -50,10 +59,10 @@ TetMesh tetrahedralize(const TriMesh& surface, int resolution, TetrahedralizeSta
   const Aabb box = bounding_box(surface);
   const double longest = box.extent().maxCoeff();
   if (!(longest > 0.0) || !std::isfinite(longest)) throw bad_input("tetrahedralize: the surface has no extent");
-  const double h = longest / resolution;
-  Eigen::Vector3i n;
-  for (int a = 0; a < 3; ++a) n[a] = std::max(1, static_cast<int>(std::ceil(box.extent()[a] / h - 1e-9)));
-  const Eigen::Vector3d origin = box.center() - 0.5 * h * n.cast<double>();
+  const CubicGrid grid = cubic_grid(box, resolution);
+  const double h = grid.cell;
+  const Eigen::Vector3i n = grid.cells;
+  const Eigen::Vector3d origin = grid.origin;
   auto cell_id = [&](int i, int j, int k) { return (static_cast<long>(k) * n[1] + j) * n[0] + i; };
   const long num_cells = static_cast<long>(n[0]) * n[1] * n[2];
 
@@ -76,7 +85,7 @@ TetMesh tetrahedralize(const TriMesh& surface, int resolution, TetrahedralizeSta
         for (int i = lo[0]; i <= hi[0]; ++i) {
           char& kept = keep[static_cast<size_t>(cell_id(i, j, k))];
           if (kept) continue;
-          const Eigen::Vector3d c = origin + h * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5);
+          const Eigen::Vector3d c = grid.center(i, j, k);
           if (triangle_overlaps_box(p[0], p[1], p[2], c, half)) {
             kept = 1;
             ++crossing;
@@ -94,7 +103,7 @@ TetMesh tetrahedralize(const TriMesh& surface, int resolution, TetrahedralizeSta
       for (int i = 0; i < n[0]; ++i) {
         char& kept = keep[static_cast<size_t>(cell_id(i, j, k))];
         if (kept) continue;
-        if (inside_by_winding_number(winding(origin + h * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5)))) {
+        if (inside_by_winding_number(winding(grid.center(i, j, k)))) {
           kept = 2;
           ++inside;
         }

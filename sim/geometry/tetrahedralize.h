@@ -13,6 +13,19 @@ namespace recoil::sim {
 
 class EmbreeDevice;
 
+// The cubic grid the lattice (and the weighing of an open solid,
+// winding_solid.h) lays over a surface's bounds: cells of side `cell`,
+// `resolution` of them along the longest side and at least one along each
+// axis, centred on the bounds.
+struct CubicGrid {
+  double cell = 0.0;                                 // m
+  Eigen::Vector3i cells = Eigen::Vector3i::Ones();   // along x, y, z
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();  // m, the outer corner of cell (0, 0, 0)
+  Eigen::Vector3d center(int i, int j, int k) const { return origin + cell * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5); }
+};
+// box: non-empty, longest side > 0.
+CubicGrid cubic_grid(const Aabb& box, int resolution);
+
 struct TetrahedralizeStats {
   int cells_crossing = 0;  // cells a surface triangle overlaps
   int cells_inside = 0;    // cells whose centre is inside (and not crossing)

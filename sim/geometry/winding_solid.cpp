@@ -19,10 +19,9 @@ WindingSolid winding_solid(const TriMesh& surface, int resolution) {
   const double longest = box.extent().maxCoeff();
   // A surface flat along an axis encloses nothing (and the cells' centres would lie on it).
   if (!(box.extent().minCoeff() > 0.0) || !std::isfinite(longest)) return solid;
-  solid.cell = longest / resolution;
-  Eigen::Vector3i n;
-  for (int a = 0; a < 3; ++a) n[a] = std::max(1, static_cast<int>(std::ceil(box.extent()[a] / solid.cell - 1e-9)));
-  const Eigen::Vector3d origin = box.center() - 0.5 * solid.cell * n.cast<double>();
+  const CubicGrid grid = cubic_grid(box, resolution);
+  solid.cell = grid.cell;
+  const Eigen::Vector3i& n = grid.cells;
   const WindingNumberTree winding(surface);
   // One z-slab per task, on every core: each slab keeps its own cells, so the
   // result is in grid order whatever thread took it.
@@ -32,7 +31,7 @@ WindingSolid winding_solid(const TriMesh& surface, int resolution) {
     for (int k = next++; k < n[2]; k = next++)
       for (int j = 0; j < n[1]; ++j)
         for (int i = 0; i < n[0]; ++i) {
-          const Eigen::Vector3d c = origin + solid.cell * Eigen::Vector3d(i + 0.5, j + 0.5, k + 0.5);
+          const Eigen::Vector3d c = grid.center(i, j, k);
           if (inside_by_winding_number(winding(c))) slabs[static_cast<size_t>(k)].push_back(c);
         }
   };
