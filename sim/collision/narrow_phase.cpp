@@ -230,6 +230,16 @@ namespace {
 // contact.
 double self_reach(double rest_distance, double margin) { return std::min(margin, rest_distance - margin); }
 
+// Whether a pair d0 apart at the start of the step and d1 at its end may
+// come within `reach` in between, when each point of one primitive moves at
+// most `relative` with respect to each point of the other (m): the distance
+// then changes by at most relative * |s - s'| between step fractions s and
+// s', so it stays above max(d0 - relative s, d1 - relative (1 - s)), whose
+// least value is (d0 + d1 - relative) / 2 where the two lines cross.
+bool comes_within(double d0, double d1, double reach, double relative) {
+  return d0 <= reach + relative && d1 <= reach + relative && d0 + d1 <= 2.0 * reach + relative;
+}
+
 }  // namespace
 bool interacts_with_planes(const PreparedSurface& a) { return !is_prescribed(a.surface->kind); }
 
@@ -253,11 +263,9 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   if (!(distance <= margin + relative)) return std::nullopt;
   const double reach = a.index == b.index ? self_reach(rest_distance(*sa.rest, vertex, tv), margin) : margin;
   if (!(reach > 0.0) || !(distance <= reach + relative)) return std::nullopt;
-  // The same bound from the end of the step (narrow_phase.h).
-  if (relative > 0.0) {
-    const Eigen::Vector3d end = closest_point_on_triangle(p1, t1[0], t1[1], t1[2]).point;
-    if (!((p1 - end).norm() <= reach + relative)) return std::nullopt;
-  }
+  if (relative > 0.0 &&
+      !comes_within(distance, (p1 - closest_point_on_triangle(p1, t1[0], t1[1], t1[2]).point).norm(), reach, relative))
+    return std::nullopt;
 
   const double tol = pair_tolerance(a, b);
   ContactCandidate c;
@@ -337,9 +345,10 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
     for (const Eigen::Vector3d& db_j : {Eigen::Vector3d(b0e - b0), Eigen::Vector3d(b1e - b1)})
       relative = std::max(relative, (da_i - db_j).norm());
   if (!(distance <= reach + relative)) return std::nullopt;
-  if (relative > 0.0) {  // the same bound from the end of the step
+  if (relative > 0.0) {
     const SegmentClosestPoints end = closest_points_on_segments(a0e, a1e, b0e, b1e);
-    if (!(((a0e + end.s * (a1e - a0e)) - (b0e + end.t * (b1e - b0e))).norm() <= reach + relative)) return std::nullopt;
+    if (!comes_within(distance, ((a0e + end.s * (a1e - a0e)) - (b0e + end.t * (b1e - b0e))).norm(), reach, relative))
+      return std::nullopt;
   }
   std::optional<double> toi;
   if (motion > 0.0) toi = edge_edge_toi(a0, a0e, a1, a1e, b0, b0e, b1, b1e, tol + 1e-12 * motion);

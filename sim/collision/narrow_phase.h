@@ -7,16 +7,20 @@
 // far the pair's primitives move with respect to each other over the step:
 // the largest |(x1 - x0)_i - (x1 - x0)_j| over a vertex i of one and j of the
 // other):
-// - vertex v (surface A) / triangle t (surface B):
-//     dist(v, t) <= margin + r at x0, and the same at x1,
+// - vertex v (surface A) / triangle t (surface B), d0 and d1 their
+//   distances at x0 and x1:
+//     d0 <= margin + r, d1 <= margin + r and d0 + d1 <= 2 margin + r,
 //   necessary conditions for the pair to come within the margin at some time
 //   during the step (linear motion): any point of t is a fixed blend of its
 //   vertices, so v moves by at most r with respect to it, and the distance
-//   changes by at most s r over a fraction s of the step. Bodies falling
+//   changes by at most r |s - s'| between fractions s and s' of the step, so
+//   it stays above (d0 + d1 - r) / 2. A pair as far apart at the end as at
+//   the start, moving past rather than towards each other (two sides of a
+//   landing body squashed by the step), is thus no candidate. Bodies falling
 //   together (a pile before it lands) therefore give no candidates until they
 //   meet; the broad phase bounds r by |x1 - x0|(v) + |x1 - x0|(t). Pairs that
 //   do meet (continuous check) always pass.
-// - edge e (A) / edge f (B): dist(e, f) <= margin + r at x0 and x1, the
+// - edge e (A) / edge f (B): the same three conditions on dist(e, f), the
 //   closest points (at the impact, if the continuous check found one) lie
 //   more than margin/10 from both edges' ends, and the edges are not
 //   parallel to within the margin (sine of their angle times the longer
