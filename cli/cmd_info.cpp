@@ -5,6 +5,7 @@
 #include <iostream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <thread>
 
 #include "cli/commands.h"
 #include "cli/drop_scene.h"
@@ -102,8 +103,10 @@ int run_info(const InfoOptions& options, bool resolution_given) {
                                        {"nodes", tets.num_nodes()},
                                        {"tets", tets.num_tets()}}
                       : nlohmann::json(nullptr);
-  // An open surface's solid is where its winding number says inside.
-  const double volume = stats.watertight ? std::abs(stats.volume) : sim::winding_solid(mesh).volume();
+  // An open surface's solid is where its winding number says inside, weighed on every core.
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const double volume =
+      stats.watertight ? std::abs(stats.volume) : sim::winding_solid(mesh, sim::kWeighingResolution, cores).volume();
   if (options.json) {
     nlohmann::json out = {{"file", options.path},
                           {"vertices", stats.vertices},

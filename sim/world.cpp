@@ -58,7 +58,8 @@ World::World(const WorldDesc& desc)
   for (size_t i = 0; i < desc.bodies.size(); ++i) {
     const std::string where = desc.bodies[i].origin.where("bodies/" + std::to_string(i));
     check_friction(desc.bodies[i].static_friction, desc.bodies[i].kinetic_friction, where + "/friction");
-    m_bodies.push_back(build_deformable_body(desc.bodies[i], *m_device, where, desc.contact.margin));
+    m_bodies.push_back(build_deformable_body(desc.bodies[i], *m_device, where, desc.contact.margin,
+                                             desc.contact.num_threads));
     m_bodies.back().node_offset = nodes;
     nodes += m_bodies.back().num_nodes;
     m_mu_static.push_back(desc.bodies[i].static_friction);
@@ -74,11 +75,12 @@ World::World(const WorldDesc& desc)
   for (size_t i = 0; i < desc.rigid_bodies.size(); ++i) {
     const std::string where = desc.rigid_bodies[i].origin.where("rigid_bodies/" + std::to_string(i));
     if (anything_collides) {
-      m_rigid.push_back(build_rigid_body(desc.rigid_bodies[i], *m_device, where, desc.contact.margin));
+      m_rigid.push_back(build_rigid_body(desc.rigid_bodies[i], *m_device, where, desc.contact.margin,
+                                      desc.contact.num_threads));
     } else {
       RigidBodyDesc own_surface = desc.rigid_bodies[i];
       own_surface.collision.keep_mesh = true;
-      m_rigid.push_back(build_rigid_body(own_surface, *m_device, where, desc.contact.margin));
+      m_rigid.push_back(build_rigid_body(own_surface, *m_device, where, desc.contact.margin, desc.contact.num_threads));
     }
     if (m_rigid.back().kind == BodyKind::rigid) {
       m_rigid.back().linear_node = nodes;

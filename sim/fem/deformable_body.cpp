@@ -37,7 +37,7 @@ TriMesh compact_boundary(const TetMesh& tets) {
 }  // namespace
 
 DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevice& device, const std::string& where,
-                                     double margin) {
+                                     double margin, int threads) {
   validate(desc.material, where + "/material");
   if (!desc.transform.position.allFinite() || !desc.transform.rotation.allFinite() || !desc.velocity.allFinite())
     throw bad_input(where + ": transform and velocity must be finite");
@@ -107,7 +107,8 @@ DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevic
   // one's signed volume counts its holes as cones from the centre of its
   // bounds: its solid is where its winding number says inside, and one that
   // encloses nothing weighs its tets.
-  body.surface_volume = watertight ? std::abs(enclosed_volume(drawn)) : winding_solid(drawn).volume();
+  body.surface_volume =
+      watertight ? std::abs(enclosed_volume(drawn)) : winding_solid(drawn, kWeighingResolution, threads).volume();
   body.encloses_nothing = !(body.surface_volume > 0.0);
   if (body.encloses_nothing) body.surface_volume = tet_mass / desc.material.density;
   body.mass *= desc.material.density * body.surface_volume / tet_mass;

@@ -76,8 +76,9 @@ struct DeformableBody {
 // Builds the body (tetrahedralizing through `device` when needed). Throws
 // bad_input naming `where` for invalid descriptions. Initial positions are
 // the rest nodes; the caller copies them into the global vectors.
-// `margin` (m) is the world's contact margin, for the default collision surface.
+// `margin` (m) is the world's contact margin, for the default collision surface;
+// `threads` weigh an open surface's solid (winding_solid.h).
 DeformableBody build_deformable_body(const DeformableBodyDesc& desc, EmbreeDevice& device, const std::string& where,
-                                     double margin);
+                                     double margin, int threads = 1);
 
 }  // namespace recoil::sim

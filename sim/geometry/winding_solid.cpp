@@ -11,8 +11,9 @@
 
 namespace recoil::sim {
 
-WindingSolid winding_solid(const TriMesh& surface, int resolution) {
+WindingSolid winding_solid(const TriMesh& surface, int resolution, int threads) {
   if (resolution < 1) throw bad_input("winding_solid: resolution must be at least 1");
+  if (threads < 1) throw bad_input("winding_solid: threads must be at least 1");
   WindingSolid solid;
   if (surface.empty()) return solid;
   const Aabb box = bounding_box(surface);
@@ -23,8 +24,8 @@ WindingSolid winding_solid(const TriMesh& surface, int resolution) {
   solid.cell = grid.cell;
   const Eigen::Vector3i& n = grid.cells;
   const WindingNumberTree winding(surface);
-  // One z-slab per task, on every core: each slab keeps its own cells, so the
-  // result is in grid order whatever thread took it.
+  // One z-slab per task: each slab keeps its own cells, so the result is in
+  // grid order whatever thread took it.
   std::vector<std::vector<Eigen::Vector3d>> slabs(static_cast<size_t>(n[2]));
   std::atomic<int> next{0};
   auto work = [&] {
@@ -35,9 +36,8 @@ WindingSolid winding_solid(const TriMesh& surface, int resolution) {
           if (inside_by_winding_number(winding(c))) slabs[static_cast<size_t>(k)].push_back(c);
         }
   };
-  const int threads = std::clamp(static_cast<int>(std::thread::hardware_concurrency()), 1, n[2]);
   std::vector<std::thread> pool;
-  for (int t = 1; t < threads; ++t) pool.emplace_back(work);
+  for (int t = 1; t < std::min(threads, n[2]); ++t) pool.emplace_back(work);
   work();
   for (std::thread& t : pool) t.join();
   for (const auto& slab : slabs) solid.centers.insert(solid.centers.end(), slab.begin(), slab.end());

@@ -24,7 +24,10 @@ struct WindingSolid {
 
 // surface: #V by 3 / #F by 3, any winding, open or closed. No cell inside
 // (an empty solid) means the surface encloses nothing: a sheet, parts thinner
-// than a cell everywhere, or a surface flat along an axis. Deterministic.
-WindingSolid winding_solid(const TriMesh& surface, int resolution = kWeighingResolution);
+// than a cell everywhere, or a surface flat along an axis. Deterministic:
+// the same cells, in the same order, for any number of `threads` (>= 1),
+// which is how many run the grid (a batch of several items gives each a
+// share of the cores).
+WindingSolid winding_solid(const TriMesh& surface, int resolution = kWeighingResolution, int threads = 1);
 
 }  // namespace recoil::sim

@@ -22,7 +22,8 @@ double RigidBody::kinetic_energy() const {
   return 0.5 * mass * velocity.squaredNorm() + 0.5 * angular_velocity.dot(world_inertia() * angular_velocity);
 }
 
-RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin) {
+RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin,
+                           int threads) {
   if (desc.kind == BodyKind::deformable)
     throw bad_input(where + ": a rigid body description is rigid, kinematic or fixed, not deformable");
   if (desc.mesh.empty()) throw bad_input(desc.origin.mesh_field(where) + ": a rigid body needs a surface");
@@ -57,7 +58,7 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
     if (closed) {
       props = mass_properties(mesh, desc.density);
     } else {
-      const WindingSolid solid = winding_solid(mesh);
+      const WindingSolid solid = winding_solid(mesh, kWeighingResolution, threads);
       body.encloses_nothing = solid.centers.empty();
       props = body.encloses_nothing ? mass_properties(tetrahedralize(mesh, kDefaultResolution), desc.density)
                                     : mass_properties(solid, desc.density);

@@ -62,8 +62,9 @@ struct RigidBody {
 // with non-positive density or enclosed volume. Mass properties come from the
 // mesh when it is closed, else from the lattice solid its winding number fills
 // (sim/geometry/tetrahedralize.h); `margin` (m, the world's contact margin)
-// sets the default collision surface.
-RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin);
+// sets the default collision surface; `threads` weigh an open surface's solid.
+RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, const std::string& where, double margin,
+                           int threads = 1);
 
 // The pose after moving for h seconds at constant velocity and angular
 // velocity: c + h v, exp(h w) q (exact rotation, then re-normalised).

@@ -1,11 +1,12 @@
 // The solid an open surface's winding number fills: a closed box is tiled
 // exactly, a box with its lid off keeps all but its top layer (its signed
-// volume loses a sixth), an open shell weighs the same wherever it lies, and a
-// flat sheet encloses nothing.
+// volume loses a sixth), an open shell weighs the same wherever it lies and on
+// any number of threads, and a flat sheet encloses nothing.
 #include "sim/geometry/winding_solid.h"
 
 #include <gtest/gtest.h>
 
+#include "core/error.h"
 #include "sim/geometry/mesh_stats.h"
 #include "sim/geometry/primitives.h"
 #include "sim/rigid/mass_properties.h"
@@ -55,6 +56,18 @@ TEST(WindingSolid, AnOpenShellWeighsTheSameWhereverItLies) {
   TriMesh moved = open;
   transform_in_place(moved, Eigen::Matrix3d::Identity(), Eigen::Vector3d::Ones(), Eigen::Vector3d(5.0, -3.0, 2.0));
   EXPECT_NEAR(winding_solid(moved).volume(), winding_solid(open).volume(), 1e-12);
+}
+
+TEST(WindingSolid, AnyNumberOfThreadsFindsTheSameCellsInTheSameOrder) {
+  const TriMesh open = lidless(make_box(Eigen::Vector3d(0.3, 0.2, 0.1), 1));
+  const WindingSolid one = winding_solid(open, 24, 1);
+  ASSERT_FALSE(one.centers.empty());
+  for (int threads : {2, 5, 64}) {
+    const WindingSolid many = winding_solid(open, 24, threads);
+    EXPECT_EQ(many.cell, one.cell);
+    EXPECT_EQ(many.centers, one.centers) << threads << " threads";
+  }
+  EXPECT_THROW(winding_solid(open, 24, 0), Error);
 }
 
 TEST(WindingSolid, ASheetEnclosesNothing) {
