@@ -9,6 +9,7 @@
 #include "core/check.h"
 #include "sim/collision/candidate_reduction.h"
 #include "sim/collision/embree_scene.h"
+#include "sim/collision/local_deformation.h"
 #include "sim/collision/narrow_phase.h"
 #include "sim/collision/rest_clearance.h"
 
@@ -23,6 +24,7 @@ struct CollisionDetector::Impl {
     std::unique_ptr<BoxScene> edge_boxes;       // padded by the edges' motion, against other surfaces
     std::unique_ptr<BoxScene> self_edge_boxes;  // the searched edges, padded by self_motion, keyed by their vertices
     std::unique_ptr<RestClearance> clearance;   // of `rest_shape`, for self-contact surfaces
+    std::unique_ptr<RestCells> cells;           // of `rest_shape`, for self-contact surfaces
     const Points* rest_shape = nullptr;
   };
   EmbreeDevice device;
@@ -100,30 +102,47 @@ struct SelfSearch {
   // Whether each vertex's point query runs (#V), and the edges that go into
   // the self box scene (ascending): bent ones whose rest clearance, less their
   // displacement from the rigid fit of the rest shape and the surface's
-  // largest, is within the self query's radius (rest_clearance.h).
+  // largest, is within the self query's radius (rest_clearance.h), unless the
+  // surface around them is rigid to within half the margin
+  // (local_deformation.h) and nothing farther than the clearance's reach can
+  // come that close.
   std::vector<char> vertex;
   std::vector<int> edges;
 };
 
-SelfSearch self_search(const PreparedSurface& s, const RestClearance& clearance, const std::vector<int>& bent,
-                       double margin) {
+SelfSearch self_search(const PreparedSurface& s, const RestClearance& clearance, const RestCells& cells,
+                       const std::vector<int>& bent, double margin) {
   SelfSearch out;
   out.motion = self_motion(s, margin);
   for (double q : out.motion) out.max_motion = std::max(out.max_motion, q);
-  const std::vector<double> displacement = fit_rigid_motion(*s.surface->rest, s.surface->x0).residual;
+  const Points& rest = *s.surface->rest;
+  const std::vector<double> displacement = fit_rigid_motion(rest, s.surface->x0).residual;
   double largest = 0.0;
   for (double d : displacement) largest = std::max(largest, d);
   // Rounding of the distances compared, m (relative 1e-12 of the coordinates).
   const double slack = 1e-12 * s.length_scale;
   const double reach = margin + out.max_motion + largest + slack;
+  const double cap = clearance_reach(margin);  // the clearances' cap: beyond it only the global bound holds
+  LocalDeformation local(cells, rest, s.surface->x0, s.surface->x1);
+  auto locally_rigid = [&](int cell) { return 2.0 * local(cell) + slack < margin; };
+  // Whether a primitive with these clearance, displacement and motion, in
+  // cells [first, last), may have a candidate.
+  auto searched = [&](double clear, double moved, double motion, const int* first, const int* last) {
+    if (!(clear - moved <= reach + motion)) return false;
+    return !(cap - moved > reach + motion && std::all_of(first, last, locally_rigid));
+  };
   out.vertex.resize(static_cast<size_t>(s.num_vertices()));
-  for (size_t v = 0; v < out.vertex.size(); ++v)
-    out.vertex[v] = clearance.vertex[v] - displacement[v] <= reach + out.motion[v];
+  for (size_t v = 0; v < out.vertex.size(); ++v) {
+    const int* cell = &cells.vertex_cell[v];
+    out.vertex[v] = searched(clearance.vertex[v], displacement[v], out.motion[v], cell, cell + 1);
+  }
   for (int e : bent) {
     const size_t p = static_cast<size_t>(s.edges[static_cast<size_t>(e)][0]);
     const size_t q = static_cast<size_t>(s.edges[static_cast<size_t>(e)][1]);
-    if (clearance.edge[static_cast<size_t>(e)] - std::max(displacement[p], displacement[q]) <=
-        reach + std::max(out.motion[p], out.motion[q]))
+    const int* cell = cells.edge_cells.data();
+    if (searched(clearance.edge[static_cast<size_t>(e)], std::max(displacement[p], displacement[q]),
+                 std::max(out.motion[p], out.motion[q]), cell + cells.edge_start[static_cast<size_t>(e)],
+                 cell + cells.edge_start[static_cast<size_t>(e) + 1]))
       out.edges.push_back(e);
   }
   return out;
@@ -208,9 +227,10 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
       if (!same || sc.rest_shape != s.rest || !sc.clearance) {
         sc.clearance = std::make_unique<RestClearance>(
             rest_clearance(m_impl->device, *s.rest, s.triangles, sc.edges, margin, clearance_reach(margin)));
+        sc.cells = std::make_unique<RestCells>(rest_cells(*s.rest, s.triangles, sc.edges, clearance_reach(margin)));
         sc.rest_shape = s.rest;
       }
-      searches[i] = self_search(prepared[i], *sc.clearance, bent[i], margin);
+      searches[i] = self_search(prepared[i], *sc.clearance, *sc.cells, bent[i], margin);
       if (!sc.self_edge_boxes) sc.self_edge_boxes = std::make_unique<BoxScene>(m_impl->device);
       std::vector<std::array<int, 2>> keys;
       for (int e : searches[i].edges) keys.push_back(sc.edges[static_cast<size_t>(e)]);
