@@ -122,9 +122,9 @@ SelfSearch self_search(const PreparedSurface& s, const RestClearance& clearance,
   // Rounding of the distances compared, m (relative 1e-12 of the coordinates).
   const double slack = 1e-12 * s.length_scale;
   const double reach = margin + out.max_motion + largest + slack;
-  const double cap = clearance_reach(margin);  // the clearances' cap: beyond it only the global bound holds
+  const double cap = cells.reach;  // the clearances' cap (both clearance_reach): beyond it only the global bound holds
   LocalDeformation local(cells, rest, s.surface->x0, s.surface->x1);
-  auto locally_rigid = [&](int cell) { return 2.0 * local(cell) + slack < margin; };
+  auto locally_rigid = [&](int cell) { return cell >= 0 && 2.0 * local(cell) + slack < margin; };
   // Whether a primitive with these clearance, displacement and motion, in
   // cells [first, last), may have a candidate.
   auto searched = [&](double clear, double moved, double motion, const int* first, const int* last) {

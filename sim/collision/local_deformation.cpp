@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 
 #include "core/check.h"
@@ -21,25 +22,38 @@ struct Grid {
     return std::clamp<int64_t>(c, 0, cells[a] - 1);
   }
   int64_t key(int64_t i, int64_t j, int64_t k) const { return i + cells[0] * (j + cells[1] * k); }
+  Eigen::Matrix<int64_t, 3, 1> coordinates(int64_t key) const {
+    return {key % cells[0], key / cells[0] % cells[1], key / (cells[0] * cells[1])};
+  }
 };
 
 }  // namespace
 
 RestCells rest_cells(const Points& rest, const Triangles& triangles, const std::vector<std::array<int, 2>>& edges,
                      double reach) {
-  RECOIL_CHECK(reach > 0.0 && std::isfinite(reach), "reach " << reach);
   RestCells out;
   out.reach = reach;
   const double size = 2.0 * reach;
   const int nv = static_cast<int>(rest.rows());
-  if (nv == 0) {
-    out.edge_start.assign(edges.size() + 1, 0);
+  // No cells: every primitive in cell -1, excused by the whole-surface bound alone.
+  auto without_cells = [&] {
+    out.vertex_cell.assign(static_cast<size_t>(nv), -1);
+    out.edge_start.resize(edges.size() + 1);
+    for (size_t e = 0; e <= edges.size(); ++e) out.edge_start[e] = static_cast<int>(e);
+    out.edge_cells.assign(edges.size(), -1);
     out.near_start = {0};
     return out;
-  }
+  };
+  if (nv == 0 || !(reach > 0.0) || !std::isfinite(reach)) return without_cells();
   const Aabb box = bounding_box(rest);
   Grid grid{box.min, size, {}};
-  for (int a = 0; a < 3; ++a) grid.cells[a] = static_cast<int64_t>(std::floor(box.extent()[a] / size)) + 1;
+  double numbered = 1.0;  // cells in the grid's box, which the int64 keys must number
+  for (int a = 0; a < 3; ++a) {
+    const double along = std::floor(box.extent()[a] / size) + 1.0;
+    numbered *= along;
+    grid.cells[a] = static_cast<int64_t>(std::min(along, 1e15));
+  }
+  if (!(numbered < 1e15)) return without_cells();
   auto key_at = [&](const Eigen::Vector3d& p) {
     return grid.key(grid.axis(p.x(), 0), grid.axis(p.y(), 1), grid.axis(p.z(), 2));
   };
@@ -49,6 +63,12 @@ RestCells rest_cells(const Points& rest, const Triangles& triangles, const std::
     const int n = static_cast<int>(std::ceil((q - p).norm() / reach));
     for (int i = 0; i <= n; ++i) visit(n == 0 ? p : Eigen::Vector3d(p + (q - p) * (static_cast<double>(i) / n)));
   };
+
+  // Edges much longer than the reach (a margin far finer than the mesh) would
+  // need more samples than the search could ever save: no local bound then.
+  double sampled = 0.0;
+  for (const auto& e : edges) sampled += std::ceil((point_at(rest, e[0]) - point_at(rest, e[1])).norm() / reach) + 1.0;
+  if (!(sampled <= 64.0 * static_cast<double>(nv + static_cast<int>(edges.size())))) return without_cells();
 
   // The occupied cells (holding a vertex or an edge sample), ascending by key:
   // cell index = position in `keys`.
@@ -63,6 +83,9 @@ RestCells rest_cells(const Points& rest, const Triangles& triangles, const std::
   };
   out.vertex_cell.resize(static_cast<size_t>(nv));
   for (int v = 0; v < nv; ++v) out.vertex_cell[static_cast<size_t>(v)] = cell_of(key_at(point_at(rest, v)));
+  std::vector<std::vector<int>> near(keys.size());
+  // A vertex no triangle uses is still a primitive of its own cell.
+  for (int v = 0; v < nv; ++v) near[static_cast<size_t>(out.vertex_cell[static_cast<size_t>(v)])].push_back(v);
   out.edge_start.push_back(0);
   for (const auto& e : edges) {
     const size_t first = out.edge_cells.size();
@@ -73,7 +96,6 @@ RestCells rest_cells(const Points& rest, const Triangles& triangles, const std::
     out.edge_start.push_back(static_cast<int>(out.edge_cells.size()));
   }
 
-  std::vector<std::vector<int>> near(keys.size());
   for (Eigen::Index f = 0; f < triangles.rows(); ++f) {
     Aabb tri;
     for (int k = 0; k < 3; ++k) tri.extend(point_at(rest, triangles(f, k)));
@@ -83,12 +105,26 @@ RestCells rest_cells(const Points& rest, const Triangles& triangles, const std::
       lo[a] = grid.axis(tri.min[a] - 1.5 * reach, a);
       hi[a] = grid.axis(tri.max[a] + 1.5 * reach, a);
     }
+    auto add = [&](int c) {
+      for (int m = 0; m < 3; ++m) near[static_cast<size_t>(c)].push_back(triangles(f, m));
+    };
+    double span = 1.0;  // cells in the range
+    for (int a = 0; a < 3; ++a) span *= static_cast<double>(hi[a] - lo[a] + 1);
+    if (span > static_cast<double>(keys.size())) {
+      // A sliver across much of the grid: fewer occupied cells than cells in its range.
+      for (size_t c = 0; c < keys.size(); ++c) {
+        const Eigen::Matrix<int64_t, 3, 1> at = grid.coordinates(keys[c]);
+        bool inside = true;
+        for (int a = 0; a < 3; ++a) inside = inside && at[a] >= lo[a] && at[a] <= hi[a];
+        if (inside) add(static_cast<int>(c));
+      }
+      continue;
+    }
     for (int64_t k = lo[2]; k <= hi[2]; ++k)
       for (int64_t j = lo[1]; j <= hi[1]; ++j)
         for (int64_t i = lo[0]; i <= hi[0]; ++i) {
           const int c = cell_of(grid.key(i, j, k));
-          if (c < 0) continue;
-          for (int m = 0; m < 3; ++m) near[static_cast<size_t>(c)].push_back(triangles(f, m));
+          if (c >= 0) add(c);
         }
   }
   out.near_start.assign(keys.size() + 1, 0);

@@ -13,17 +13,21 @@
 // no such pair is a candidate once 2 (D + E) < margin: for d <= 2 margin the
 // pair would need d - 2D <= d - margin + 2E, for larger d, d - 2D <= margin + 2E.
 // A body that only bends smoothly (a sagging, wobbling soft engine) is far
-// closer to rigid over a few centimetres than over its whole length, so
-// fitting (R, t) and T per neighbourhood prunes what the global fit cannot.
+// closer to rigid over a few clearance reaches (3 cm at the default margin)
+// than over its whole length, so fitting (R, t) and T per neighbourhood
+// prunes what the global fit cannot.
 //
 // Neighbourhoods are the cells of a cubic grid over the rest shape, of side
 // 2 `reach` (reach = clearance_reach, the largest rest distance the clearances
 // tell apart). A vertex belongs to the cell it lies in; an edge to the cells
 // of points spaced at most `reach` along it, ends included, so each of its
-// points lies within reach/2 of one of them. A cell lists the vertices of
-// every triangle whose rest box comes within 1.5 reach of it: every
-// primitive within `reach` of a vertex in the cell or of an edge point within
-// reach/2 of one in it, and that vertex or edge itself.
+// points lies within reach/2 of one of them. A cell lists its own vertices
+// and those of every triangle whose rest box comes within 1.5 reach of it
+// along each axis: that holds every primitive within `reach` of a vertex in
+// the cell, or within reach of an edge point that lies within reach/2 of a
+// sample point in the cell, and that vertex or edge itself.
+// A primitive with a cell of -1 is never excused locally: so are all when
+// reach is not positive or the grid would be too large to number.
 #include <array>
 #include <vector>
 
@@ -32,8 +36,8 @@
 namespace recoil::sim {
 
 struct RestCells {
-  double reach = 0.0;              // m, see above (a cell's side is twice this)
-  std::vector<int> vertex_cell;    // #V: the cell (index below) holding each vertex at rest
+  double reach = 0.0;              // m, clearance_reach (a cell's side is twice this)
+  std::vector<int> vertex_cell;    // #V: the cell (index below) holding each vertex at rest, or -1
   std::vector<int> edge_start;     // #E + 1: edge e's cells are edge_cells[edge_start[e], edge_start[e + 1])
   std::vector<int> edge_cells;
   std::vector<int> near_start;     // #cells + 1: cell c's list is near_vertices[near_start[c], near_start[c + 1])
@@ -42,7 +46,7 @@ struct RestCells {
 };
 
 // Built once per rest shape (#V by 3), its triangles and their unique edges
-// (unique_edges); reach > 0, m.
+// (unique_edges); reach in m.
 RestCells rest_cells(const Points& rest, const Triangles& triangles, const std::vector<std::array<int, 2>>& edges,
                      double reach);
 

@@ -1,7 +1,8 @@
 // The self-contact broad phase's local bound: every primitive a vertex or an
-// edge may touch is listed by one of its cells, the bound is zero for a rigid
-// motion, and a surface bent smoothly far from its rest shape searches
-// nothing of itself while its candidates stay the oracle's.
+// edge may touch is listed by one of its cells (long edges and loose vertices
+// too), the bound is zero for a rigid motion, and a surface bent smoothly far
+// from its rest shape searches nothing of itself while its candidates stay
+// the oracle's.
 #include "sim/collision/local_deformation.h"
 
 #include <gtest/gtest.h>
@@ -27,22 +28,23 @@ bool cell_lists(const RestCells& cells, int cell, int vertex) {
   return std::binary_search(first, last, vertex);
 }
 
-TEST(LocalDeformation, EveryPrimitiveWithinReachIsListedByACellOfTheVertexOrEdge) {
-  // A 3 cm sphere squashed to a fifth of its height: edges of 1-5 mm and
-  // long slivers round the rim.
-  TriMesh s = testing::icosphere(3);
-  s.vertices *= 0.03;
-  s.vertices.col(1) *= 0.2;
+// Checks the listing guarantee of local_deformation.h on every pair of `s`
+// within the clearances' reach at rest: a vertex's cell lists the triangle
+// and the vertex; one of an edge's cells lists both edges.
+void expect_pairs_within_reach_listed(const TriMesh& s) {
   const std::vector<std::array<int, 2>> edges = unique_edges(s.triangles);
   const double reach = clearance_reach(kLocalMargin);
   const RestCells cells = rest_cells(s.vertices, s.triangles, edges, reach);
-  for (int v = 0; v < s.num_vertices(); ++v)
+  for (int v = 0; v < s.num_vertices(); ++v) {
+    const int cell = cells.vertex_cell[static_cast<size_t>(v)];
+    ASSERT_GE(cell, 0);
+    EXPECT_TRUE(cell_lists(cells, cell, v));
     for (int t = 0; t < s.num_triangles(); ++t) {
       const std::array<int, 3> tri = {s.triangles(t, 0), s.triangles(t, 1), s.triangles(t, 2)};
       if (rest_distance(s.vertices, v, tri) > reach) continue;
-      const int cell = cells.vertex_cell[static_cast<size_t>(v)];
       for (int w : tri) EXPECT_TRUE(cell_lists(cells, cell, w)) << "vertex " << v << " triangle " << t;
     }
+  }
   for (size_t e = 0; e < edges.size(); ++e)
     for (size_t f = 0; f < edges.size(); ++f) {
       if (rest_distance(s.vertices, edges[e], edges[f]) > reach) continue;
@@ -54,6 +56,23 @@ TEST(LocalDeformation, EveryPrimitiveWithinReachIsListedByACellOfTheVertexOrEdge
       }
       EXPECT_TRUE(held) << "edges " << e << " and " << f;
     }
+}
+
+TEST(LocalDeformation, EveryPrimitiveWithinReachIsListedByACellOfTheVertexOrEdge) {
+  // A 3 cm sphere squashed to a fifth of its height: edges of 1-5 mm.
+  TriMesh sphere = testing::icosphere(3);
+  sphere.vertices *= 0.03;
+  sphere.vertices.col(1) *= 0.2;
+  expect_pairs_within_reach_listed(sphere);
+  // Two 6 cm cubes of 12 triangles each, 3 mm apart, the second turned 35
+  // degrees about x so that its 6-8 cm edges cross the first's near their
+  // middles: edges spanning several cells, closest points far from any end.
+  TriMesh pair = testing::box(Eigen::Vector3d::Constant(0.03));
+  TriMesh turned = pair;
+  turned.vertices = (turned.vertices * Eigen::AngleAxisd(0.61, Eigen::Vector3d::UnitX()).toRotationMatrix().transpose())
+                        .rowwise() + Eigen::RowVector3d(0.063, 0.011, -0.007);
+  append(pair, turned);
+  expect_pairs_within_reach_listed(pair);
 }
 
 TEST(LocalDeformation, IsZeroForARigidMotionAndSeesABump) {
@@ -96,6 +115,25 @@ TEST(LocalDeformation, ASmoothlyBentSurfaceSearchesNothingOfItself) {
   testing::expect_same_candidates(found, brute_force_candidates({s}, {}, {kLocalMargin, 1}), 1e-9);
   EXPECT_TRUE(found.empty());
   EXPECT_EQ(detector.last_stats().self_pairs, 0);
+}
+
+TEST(LocalDeformation, AVertexNoTriangleUsesIsStillBounded) {
+  // A triangle and a vertex of no triangle 3 mm above it at rest, pressed to
+  // 0.5 mm: the triangle alone is rigid, the vertex has moved 2.5 mm.
+  TriMesh rest;
+  rest.vertices.resize(4, 3);
+  rest.vertices << 0, 0, 0, 0.01, 0, 0, 0, 0.01, 0, 0.002, 0.002, 0.003;
+  rest.triangles.resize(1, 3);
+  rest.triangles << 0, 1, 2;
+  TriMesh pressed = rest;
+  pressed.vertices(3, 2) = 0.0005;
+  CollisionSurface s = testing::moving_surface(pressed, 1, BodyKind::deformable, Eigen::Vector3d::Zero());
+  s.self_contact = true;
+  s.rest = &rest.vertices;
+  CollisionDetector detector({kLocalMargin, 1});
+  const auto found = detector.detect({s}, {});
+  testing::expect_same_candidates(found, brute_force_candidates({s}, {}, {kLocalMargin, 1}), 1e-9);
+  EXPECT_EQ(found.size(), 1u);
 }
 
 }  // namespace
