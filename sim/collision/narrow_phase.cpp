@@ -249,19 +249,19 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const CollisionSurface& sb = *b.surface;
   const std::array<int, 3> tv = {sb.triangles(triangle, 0), sb.triangles(triangle, 1), sb.triangles(triangle, 2)};
 
-  const Eigen::Vector3d p0 = point_at(sa.x0, vertex);
+  const Eigen::Vector3d p0 = point_at(sa.x0, vertex), p1 = point_at(sa.x1, vertex);
   std::array<Eigen::Vector3d, 3> t0, t1;
-  for (int k = 0; k < 3; ++k) t0[k] = point_at(sb.x0, tv[k]);
-  const double motion = a.vertex_motion[vertex] + b.triangle_motion[triangle];  // >= relative below
-  // The distance to the triangle's box is a lower bound of the distance to
-  // it, and far cheaper: most pairs a query offers end here, before the
-  // step's end positions are read.
-  const Eigen::Vector3d box_min = t0[0].cwiseMin(t0[1]).cwiseMin(t0[2]), box_max = t0[0].cwiseMax(t0[1]).cwiseMax(t0[2]);
-  if (!((box_min - p0).cwiseMax(p0 - box_max).cwiseMax(0.0).norm() <= margin + motion)) return std::nullopt;
-  const Eigen::Vector3d p1 = point_at(sa.x1, vertex);
-  for (int k = 0; k < 3; ++k) t1[k] = point_at(sb.x1, tv[k]);
+  for (int k = 0; k < 3; ++k) {
+    t0[k] = point_at(sb.x0, tv[k]);
+    t1[k] = point_at(sb.x1, tv[k]);
+  }
+  const double motion = a.vertex_motion[vertex] + b.triangle_motion[triangle];
   double relative = 0.0;  // narrow_phase.h: how far p moves with respect to any point of the triangle
   for (int k = 0; k < 3; ++k) relative = std::max(relative, ((p1 - p0) - (t1[k] - t0[k])).norm());
+  // The distance to the triangle's box is a lower bound of the distance to
+  // it, and far cheaper: most pairs a query offers end here.
+  const Eigen::Vector3d box_min = t0[0].cwiseMin(t0[1]).cwiseMin(t0[2]), box_max = t0[0].cwiseMax(t0[1]).cwiseMax(t0[2]);
+  if (!((box_min - p0).cwiseMax(p0 - box_max).cwiseMax(0.0).norm() <= margin + relative)) return std::nullopt;
   const TriangleClosestPoint closest = closest_point_on_triangle(p0, t0[0], t0[1], t0[2]);
   const double distance = (p0 - closest.point).norm();
   if (!(distance <= margin + relative)) return std::nullopt;
@@ -332,17 +332,16 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   const CollisionSurface& sb = *b.surface;
   const Eigen::Vector3d a0 = point_at(sa.x0, ea[0]), a1 = point_at(sa.x0, ea[1]);
   const Eigen::Vector3d b0 = point_at(sb.x0, eb[0]), b1 = point_at(sb.x0, eb[1]);
-  const double motion = a.edge_motion[edge_a] + b.edge_motion[edge_b];  // >= relative below
-  // The gap between the edges' boxes bounds their distance from below, cheaply.
-  const Eigen::Vector3d box_gap =
-      (b0.cwiseMin(b1) - a0.cwiseMax(a1)).cwiseMax(a0.cwiseMin(a1) - b0.cwiseMax(b1)).cwiseMax(0.0);
-  if (!(box_gap.norm() <= margin + motion)) return std::nullopt;
   const Eigen::Vector3d a0e = point_at(sa.x1, ea[0]), a1e = point_at(sa.x1, ea[1]);
   const Eigen::Vector3d b0e = point_at(sb.x1, eb[0]), b1e = point_at(sb.x1, eb[1]);
   double relative = 0.0;  // narrow_phase.h: how far any point of one edge moves with respect to any of the other
   for (const Eigen::Vector3d& da_i : {Eigen::Vector3d(a0e - a0), Eigen::Vector3d(a1e - a1)})
     for (const Eigen::Vector3d& db_j : {Eigen::Vector3d(b0e - b0), Eigen::Vector3d(b1e - b1)})
       relative = std::max(relative, (da_i - db_j).norm());
+  // The gap between the edges' boxes bounds their distance from below, cheaply.
+  const Eigen::Vector3d box_gap =
+      (b0.cwiseMin(b1) - a0.cwiseMax(a1)).cwiseMax(a0.cwiseMin(a1) - b0.cwiseMax(b1)).cwiseMax(0.0);
+  if (!(box_gap.norm() <= margin + relative)) return std::nullopt;
   SegmentClosestPoints closest = closest_points_on_segments(a0, a1, b0, b1);
   const double distance = ((a0 + closest.s * (a1 - a0)) - (b0 + closest.t * (b1 - b0))).norm();
   if (!(distance <= margin + relative)) return std::nullopt;
@@ -352,6 +351,7 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   if (flat_edge(a, edge_a, margin) || flat_edge(b, edge_b, margin)) return std::nullopt;
 
   const double tol = pair_tolerance(a, b);
+  const double motion = a.edge_motion[edge_a] + b.edge_motion[edge_b];
   if (relative > 0.0) {
     const SegmentClosestPoints end = closest_points_on_segments(a0e, a1e, b0e, b1e);
     if (!comes_within(distance, ((a0e + end.s * (a1e - a0e)) - (b0e + end.t * (b1e - b0e))).norm(), reach, relative))
