@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstddef>
 #include <cstdint>
 
 #include "core/check.h"
@@ -57,24 +56,30 @@ RestCells rest_cells(const Points& rest, const Triangles& triangles, const std::
   auto key_at = [&](const Eigen::Vector3d& p) {
     return grid.key(grid.axis(p.x(), 0), grid.axis(p.y(), 1), grid.axis(p.z(), 2));
   };
-  // The points each edge is sampled at: ends included, at most `reach` apart.
-  auto samples = [&](const std::array<int, 2>& e, auto&& visit) {
-    const Eigen::Vector3d p = point_at(rest, e[0]), q = point_at(rest, e[1]);
-    const int n = static_cast<int>(std::ceil((q - p).norm() / reach));
-    for (int i = 0; i <= n; ++i) visit(n == 0 ? p : Eigen::Vector3d(p + (q - p) * (static_cast<double>(i) / n)));
-  };
-
+  // Each edge is sampled at points at most `reach` apart, ends included.
+  std::vector<int> pieces(edges.size());
+  double sampled = 0.0;
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const double length = (point_at(rest, edges[e][0]) - point_at(rest, edges[e][1])).norm();
+    pieces[e] = static_cast<int>(std::min(std::ceil(length / reach), 1e9));
+    sampled += pieces[e] + 1.0;
+  }
   // Edges much longer than the reach (a margin far finer than the mesh) would
   // need more samples than the search could ever save: no local bound then.
-  double sampled = 0.0;
-  for (const auto& e : edges) sampled += std::ceil((point_at(rest, e[0]) - point_at(rest, e[1])).norm() / reach) + 1.0;
   if (!(sampled <= 64.0 * static_cast<double>(nv + static_cast<int>(edges.size())))) return without_cells();
 
-  // The occupied cells (holding a vertex or an edge sample), ascending by key:
-  // cell index = position in `keys`.
-  std::vector<int64_t> keys;
-  for (int v = 0; v < nv; ++v) keys.push_back(key_at(point_at(rest, v)));
-  for (const auto& e : edges) samples(e, [&](const Eigen::Vector3d& x) { keys.push_back(key_at(x)); });
+  // The grid keys of the vertices, then of every edge's samples, edge after edge.
+  std::vector<int64_t> point_keys;
+  point_keys.reserve(static_cast<size_t>(nv + sampled));
+  for (int v = 0; v < nv; ++v) point_keys.push_back(key_at(point_at(rest, v)));
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const Eigen::Vector3d p = point_at(rest, edges[e][0]), q = point_at(rest, edges[e][1]);
+    const int n = pieces[e];
+    for (int i = 0; i <= n; ++i)
+      point_keys.push_back(key_at(n == 0 ? p : Eigen::Vector3d(p + (q - p) * (static_cast<double>(i) / n))));
+  }
+  // The occupied cells, ascending by key: cell index = position in `keys`.
+  std::vector<int64_t> keys = point_keys;
   std::sort(keys.begin(), keys.end());
   keys.erase(std::unique(keys.begin(), keys.end()), keys.end());
   auto cell_of = [&](int64_t key) {
@@ -82,17 +87,17 @@ RestCells rest_cells(const Points& rest, const Triangles& triangles, const std::
     return it != keys.end() && *it == key ? static_cast<int>(it - keys.begin()) : -1;
   };
   out.vertex_cell.resize(static_cast<size_t>(nv));
-  for (int v = 0; v < nv; ++v) out.vertex_cell[static_cast<size_t>(v)] = cell_of(key_at(point_at(rest, v)));
+  for (int v = 0; v < nv; ++v) out.vertex_cell[static_cast<size_t>(v)] = cell_of(point_keys[static_cast<size_t>(v)]);
   std::vector<std::vector<int>> near(keys.size());
   // A vertex no triangle uses is still a primitive of its own cell.
   for (int v = 0; v < nv; ++v) near[static_cast<size_t>(out.vertex_cell[static_cast<size_t>(v)])].push_back(v);
   out.edge_start.push_back(0);
-  for (const auto& e : edges) {
-    const size_t first = out.edge_cells.size();
-    samples(e, [&](const Eigen::Vector3d& x) { out.edge_cells.push_back(cell_of(key_at(x))); });
-    std::sort(out.edge_cells.begin() + static_cast<std::ptrdiff_t>(first), out.edge_cells.end());
-    out.edge_cells.erase(std::unique(out.edge_cells.begin() + static_cast<std::ptrdiff_t>(first), out.edge_cells.end()),
-                         out.edge_cells.end());
+  size_t next = static_cast<size_t>(nv);  // the first sample key of the edge
+  for (size_t e = 0; e < edges.size(); ++e) {
+    const auto first = out.edge_cells.end() - out.edge_cells.begin();
+    for (int i = 0; i <= pieces[e]; ++i) out.edge_cells.push_back(cell_of(point_keys[next++]));
+    std::sort(out.edge_cells.begin() + first, out.edge_cells.end());
+    out.edge_cells.erase(std::unique(out.edge_cells.begin() + first, out.edge_cells.end()), out.edge_cells.end());
     out.edge_start.push_back(static_cast<int>(out.edge_cells.size()));
   }
 
