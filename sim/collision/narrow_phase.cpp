@@ -7,6 +7,7 @@
 #include "core/check.h"
 #include "sim/collision/ccd.h"
 #include "sim/collision/exact_distance.h"
+#include "sim/collision/feature_cone.h"
 #include "sim/collision/rest_clearance.h"
 
 namespace recoil::sim {
@@ -127,6 +128,34 @@ bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vect
   return d.dot(n_forward) < -kInsideCosine && d.dot(n_back) < -kInsideCosine;
 }
 
+// Unit outward normals, at positions `at`, of the triangles of `s` that hold
+// every one of `feature` (1 to 3 vertices): a vertex's ring, an edge's two
+// triangles, or the triangle itself. Degenerate triangles are left out.
+// The triangles of `s` that hold every one of `feature` (1 to 3 vertices): a
+// vertex's ring, an edge's two triangles, or the triangle itself; and their
+// unit outward normals at positions `at`. Degenerate triangles are left out.
+struct FeatureCone {
+  std::vector<int> faces;
+  std::vector<Eigen::Vector3d> normals;
+};
+template <typename At>
+FeatureCone feature_cone(const PreparedSurface& s, const std::vector<int>& feature, At at) {
+  FeatureCone cone;
+  const Triangles& tri = s.surface->triangles;
+  const int v = feature.front();
+  for (int i = s.vertex_face_start[v]; i < s.vertex_face_start[v + 1]; ++i) {
+    const int f = s.vertex_faces[static_cast<size_t>(i)];
+    bool holds = true;
+    for (int w : feature) holds = holds && (tri(f, 0) == w || tri(f, 1) == w || tri(f, 2) == w);
+    if (!holds) continue;
+    const Eigen::Vector3d n = face_normal(at(tri(f, 0)), at(tri(f, 1)), at(tri(f, 2)));
+    if (n.isZero()) continue;
+    cone.faces.push_back(f);
+    cone.normals.push_back(n.normalized());
+  }
+  return cone;
+}
+
 }  // namespace
 
 bool flat_edge(const PreparedSurface& s, int edge, double margin) {
@@ -204,6 +233,16 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   for (size_t e = 0; e < out.edges.size(); ++e)
     out.edge_motion[e] = std::max(out.vertex_motion[out.edges[e][0]], out.vertex_motion[out.edges[e][1]]);
   out.edge_opposite = edge_opposite ? *edge_opposite : edge_opposites(surface.triangles, out.edges);
+  out.vertex_face_start.assign(static_cast<size_t>(nv) + 1, 0);
+  for (int f = 0; f < nf; ++f)
+    for (int k = 0; k < 3; ++k) ++out.vertex_face_start[static_cast<size_t>(surface.triangles(f, k)) + 1];
+  for (int v = 0; v < nv; ++v) out.vertex_face_start[v + 1] += out.vertex_face_start[v];
+  out.vertex_faces.resize(static_cast<size_t>(out.vertex_face_start[nv]));
+  {
+    std::vector<int> next(out.vertex_face_start.begin(), out.vertex_face_start.end() - 1);
+    for (int f = 0; f < nf; ++f)
+      for (int k = 0; k < 3; ++k) out.vertex_faces[static_cast<size_t>(next[surface.triangles(f, k)]++)] = f;
+  }
   out.closed = !out.edges.empty() && std::all_of(out.edge_opposite.begin(), out.edge_opposite.end(),
                                                  [](const std::array<int, 2>& o) { return o[0] >= 0; });
   return out;
@@ -242,6 +281,53 @@ bool comes_within(double d0, double d1, double reach, double relative) {
 
 }  // namespace
 bool interacts_with_planes(const PreparedSurface& a) { return !is_prescribed(a.surface->kind); }
+
+namespace {
+
+// Finishes a vertex-triangle candidate `c` between two closed surfaces by the
+// rule of feature_cone.h, judged where the pair is: at the impact, else at
+// the start. `exact` is the true closest point on the triangle (at the
+// impact, if any), `sep0` = p - q and `rel` the relative motion over the step.
+std::optional<ContactCandidate> closed_pair_normal(const PreparedSurface& a, int vertex, const PreparedSurface& b,
+                                                   int triangle, const SurfacePoint& exact, ContactCandidate c,
+                                                   const Eigen::Vector3d& sep0, const Eigen::Vector3d& rel,
+                                                   double margin, double tol) {
+  const CollisionSurface& sa = *a.surface;
+  const CollisionSurface& sb = *b.surface;
+  const double s = c.toi.value_or(0.0);
+  auto at_a = [&](int v) { return lerp(point_at(sa.x0, v), point_at(sa.x1, v), s); };
+  auto at_b = [&](int v) { return lerp(point_at(sb.x0, v), point_at(sb.x1, v), s); };
+  std::vector<int> feature;
+  for (int k = 0; k < exact.count; ++k)
+    if (exact.weight[static_cast<size_t>(k)] > 0.0) feature.push_back(exact.vertex[static_cast<size_t>(k)]);
+  const FeatureCone cone_b = feature_cone(b, feature, at_b), cone_a = feature_cone(a, {vertex}, at_a);
+  const Eigen::Vector3d aim = rel.norm() > 0.0 ? Eigen::Vector3d(-rel.normalized()) : Eigen::Vector3d::Zero();
+  // At an impact p is within rounding of the feature, and d the side it
+  // meets it from.
+  const Eigen::Vector3d d = c.toi ? Eigen::Vector3d(at_a(vertex) - exact.evaluate(Points(sb.x0 + s * (sb.x1 - sb.x0)))) : sep0;
+  std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, cone_b.normals, cone_a.normals);
+  if (c.toi && !chosen) chosen = impact_cone_normal(aim, cone_b.normals, sep0, margin);
+  if (!chosen) return std::nullopt;
+  // An impact on a face that p started behind is its way out of B after
+  // crossing another face first, which that crossing holds.
+  if (c.toi && chosen->normal.dot(sep0) < -tol) return std::nullopt;
+  // The normal of another of the feature's faces, which p lies over: that
+  // face's own pair gives the same row.
+  const int source = chosen->source;
+  if (source >= 0 && source < static_cast<int>(cone_b.faces.size())) {
+    const int face = cone_b.faces[static_cast<size_t>(source)];
+    if (face != triangle) {
+      const TriangleClosestPoint over = closest_point_on_triangle(
+          at_a(vertex), at_b(sb.triangles(face, 0)), at_b(sb.triangles(face, 1)), at_b(sb.triangles(face, 2)));
+      if (over.weight[0] > 0.0 && over.weight[1] > 0.0 && over.weight[2] > 0.0) return std::nullopt;
+    }
+  }
+  c.normal = chosen->normal;
+  c.gap = c.normal.dot(point_at(sa.x0, vertex) - c.b.evaluate(sb.x0));
+  return c;
+}
+
+}  // namespace
 
 std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, int vertex, const PreparedSurface& b,
                                                      int triangle, double margin) {
@@ -312,6 +398,7 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const Eigen::Vector3d q0 = exact.evaluate(sb.x0), q1 = exact.evaluate(sb.x1);
   const Eigen::Vector3d sep0 = p0 - q0, rel = (p1 - q1) - sep0;
   const bool touching_at_start = sep0.norm() <= tol;
+  if (a.closed && b.closed) return closed_pair_normal(a, vertex, b, triangle, exact, c, sep0, rel, margin, tol);
   // Touching at the start on an edge or vertex of this triangle: its face
   // normal is only one of the feature's normals (a corner resting exactly on
   // a corner touches the top face and both side faces). Only a face that the

@@ -58,6 +58,10 @@
 // (candidate_reduction.h): one per vertex and touched feature, one per pair of
 // vertices found from both sides.
 //
+// Between two closed surfaces a vertex-triangle pair's normal and whether it
+// is a candidate at all follow feature_cone.h: p - q where it lies in both
+// features' normal cones, else the face normal that does, else no candidate.
+// The rest of this paragraph is the rule for every other pair.
 // Normal (from q on B to p on A): (p - q)/|p - q| while the points are apart
 // (so the gap is the distance, >= 0, and open or thin surfaces work from both
 // sides). At an impact found by the continuous check: the face normal
@@ -98,6 +102,8 @@ struct PreparedSurface {
   std::vector<std::array<int, 2>> edge_opposite;  // #E: third vertices of the edge's two triangles, the one
                                                   // running lo -> hi first (-1, -1 on a boundary,
                                                   // non-manifold or inconsistently wound edge)
+  std::vector<int> vertex_face_start;         // #V + 1: the triangles around vertex v are
+  std::vector<int> vertex_faces;              // vertex_faces[vertex_face_start[v] .. vertex_face_start[v + 1])
   bool closed = false;                        // every edge has both triangles, wound consistently
   double max_motion = 0.0;                    // over all vertices
   double length_scale = 0.0;                  // largest |coordinate|, for tolerances

@@ -98,9 +98,11 @@ TEST(CollisionDetector, MatchesBruteForceOnRandomScenes) {
     }
   }
   // The scenes really exercise every kind of pair (lower counts since the
-  // candidate rule bounds approach by relative motion, narrow_phase.h).
+  // candidate rule bounds approach by relative motion, narrow_phase.h, and
+  // since between closed surfaces a vertex is a candidate only where the
+  // surfaces meet, feature_cone.h).
   std::cout << "self-contact candidates over all scenes: " << self_total << "\n";
-  EXPECT_GT(totals[0], 300);
+  EXPECT_GT(totals[0], 150);
   EXPECT_GT(totals[1], 400);
   EXPECT_GT(totals[2], 20);
   EXPECT_GT(self_total, 20);
@@ -128,7 +130,7 @@ TEST(CollisionDetector, SameOutputRunAfterRunAndAtAnyThreadCount) {
   const RandomScene scene = random_scene(9);
   CollisionDetector one({0.006, 1});
   const auto reference = one.detect(scene.surfaces, scene.planes);
-  ASSERT_GT(reference.size(), 80u);
+  ASSERT_GT(reference.size(), 60u);
   testing::expect_same_candidates(one.detect(scene.surfaces, scene.planes), reference, 0.0);
   for (int threads : {2, 3, 8}) {
     CollisionDetector many({0.006, threads});
