@@ -131,6 +131,20 @@ inline WorldDesc touching_cube_stack(int count) {
   return w;
 }
 
+// `count` jelly cubes (E 1 MPa, Poisson 0.45, damping ratio 0.02, a lattice
+// of `resolution` cells a side) stacked on the ground with no gap at all, mu 0.5.
+inline WorldDesc touching_jelly_stack(int count, int resolution) {
+  WorldDesc w = base_world(kBenchDt);
+  w.planes.push_back(ground(friction(0.5, 0.5)));
+  Material m = jelly(1e6, kBenchDensity);
+  m.poisson_ratio = 0.45;
+  m.damping_ratio = 0.02;
+  for (int i = 0; i < count; ++i)
+    w.bodies.push_back(soft_box("jelly" + std::to_string(i), Eigen::Vector3d::Constant(kBenchCube), resolution, m,
+                                Eigen::Vector3d(0.0, (i + 0.5) * kBenchCube, 0.0), friction(0.5, 0.5)));
+  return w;
+}
+
 // A cube resting on a plane tilted by 16 degrees, mu 0.35 (tan 16 deg =
 // 0.287: static friction holds it), lifted `gap` off the plane.
 inline constexpr double kHoldingSlope = 16.0 * kPi / 180.0;
