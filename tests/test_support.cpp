@@ -35,6 +35,8 @@ std::string file_bytes(const fs::path& path) {
   return text.str();
 }
 
+void write_file(const fs::path& path, const std::string& bytes) { std::ofstream(path, std::ios::binary) << bytes; }
+
 CommandResult run_recoil(const std::string& args, const std::string& environment) {
   static int counter = 0;
   const fs::path dir = scratch_dir("run_recoil_" + std::to_string(counter++));

@@ -21,6 +21,9 @@ struct CommandResult {
 // A file's whole content, byte for byte ("" when it cannot be read).
 std::string file_bytes(const std::filesystem::path& path);
 
+// Writes `bytes` to `path`, replacing it.
+void write_file(const std::filesystem::path& path, const std::string& bytes);
+
 // `path` in single quotes, for the command lines of run_recoil.
 std::string shell_quote(const std::filesystem::path& path);
 

@@ -20,6 +20,7 @@ struct CollisionDetector::Impl {
     Triangles triangles;  // the topology the scenes were built for
     std::vector<std::array<int, 2>> edges;          // unique_edges(triangles)
     std::vector<std::array<int, 2>> edge_opposite;  // edge_opposites(triangles, edges)
+    std::shared_ptr<const VertexFaces> vertex_faces;  // vertex_faces(triangles)
     std::unique_ptr<TriangleScene> faces;
     std::unique_ptr<BoxScene> edge_boxes;       // padded by the edges' motion, against other surfaces
     std::unique_ptr<BoxScene> self_edge_boxes;  // the searched edges, padded by self_motion, keyed by their vertices
@@ -205,13 +206,15 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
       prepared.push_back(prepare_surface(s, static_cast<int>(i)));
       continue;
     }
-    const bool same = sc.faces && sc.triangles.rows() == s.triangles.rows() && sc.triangles == s.triangles;
+    const bool same = sc.faces && sc.triangles.rows() == s.triangles.rows() && sc.triangles == s.triangles &&
+                      sc.vertex_faces->start.size() == static_cast<size_t>(s.x0.rows()) + 1;
     if (!same) {
       sc.edges = unique_edges(s.triangles);
       sc.edge_opposite = edge_opposites(s.triangles, sc.edges);
+      sc.vertex_faces = std::make_shared<const VertexFaces>(vertex_faces(s.triangles, static_cast<int>(s.x0.rows())));
     }
     // Validates the surface before Embree sees it.
-    prepared.push_back(prepare_surface(s, static_cast<int>(i), &sc.edges, &sc.edge_opposite));
+    prepared.push_back(prepare_surface(s, static_cast<int>(i), &sc.edges, &sc.edge_opposite, sc.vertex_faces));
     if (same) {
       sc.faces->update_vertices(s.x0);
     } else {

@@ -80,7 +80,7 @@ std::optional<ConeNormal> feature_cone_normal(const Eigen::Vector3d& d, const Ei
   const double length = d.norm();
   if (length > 0.0) {
     const Eigen::Vector3d n = d / length;
-    if (inside(n, cone_b) && faces(n, cone_a)) return ConeNormal{n, -1};
+    if (inside(n, cone_b) && inside(-n, cone_a)) return ConeNormal{n, -1};
   }
   const Eigen::Vector3d toward = length > 0.0 ? Eigen::Vector3d(d / length) : aim;
   return best_generator(

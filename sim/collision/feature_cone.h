@@ -4,18 +4,19 @@
 // alone.
 //
 // A vertex p of surface A and the feature of surface B nearest it (a face,
-// an edge or a vertex of the triangle) can only meet along a direction n that
-// lies in B's normal cone at the feature (spanned by the unit normals of B's
-// faces around it) and whose reverse A's surface faces at p: -n within 45
-// degrees of A's cone there, halfway between a surface turned to the feature
-// and one sliding past it.
-// - The direction d = p - q is that n whenever it qualifies.
-// - Else the contact takes the qualifying face normal (one of B's, or one of
-//   A's reversed) nearest d. This is what keeps faces resting exactly on
-//   faces: the solve leaves their coincident vertices 1e-10 to 1e-9 m apart
-//   in random directions, so d means nothing there, while the shared face
-//   normal qualifies. Since q lies on the plane of every face around its
-//   feature, the gap along a face normal of B is p's height over that face.
+// an edge or a vertex of the triangle) are closest to each other along d =
+// p - q only if d lies in B's normal cone at the feature (spanned by the unit
+// normals of B's faces around it) and -d in A's cone at p.
+// - d is the normal whenever it lies in both cones (to rounding).
+// - Else the contact takes the face normal nearest d (one of B's, or one of
+//   A's reversed) that lies in B's cone and that A's surface faces: -n within
+//   45 degrees of A's cone, halfway between a surface turned to the feature
+//   and one sliding past it, which leaves room for A's faces to have bent
+//   against B's. This is what keeps faces resting exactly on faces: the
+//   solve leaves their coincident vertices 1e-10 to 1e-9 m apart in random
+//   directions, so d means nothing there, while the shared face normal
+//   qualifies. Since q lies on the plane of every face around its feature,
+//   the gap along a face normal of B is p's height over that face.
 // - A pair with no qualifying direction is not a contact: the surfaces meet
 //   at a neighbouring pair.
 // At an impact found by the continuous check p touches the feature, and d

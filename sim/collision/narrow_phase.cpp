@@ -143,8 +143,9 @@ FeatureCone feature_cone(const PreparedSurface& s, const std::vector<int>& featu
   FeatureCone cone;
   const Triangles& tri = s.surface->triangles;
   const int v = feature.front();
-  for (int i = s.vertex_face_start[v]; i < s.vertex_face_start[v + 1]; ++i) {
-    const int f = s.vertex_faces[static_cast<size_t>(i)];
+  const VertexFaces& around = *s.vertex_faces;
+  for (int i = around.start[static_cast<size_t>(v)]; i < around.start[static_cast<size_t>(v) + 1]; ++i) {
+    const int f = around.faces[static_cast<size_t>(i)];
     bool holds = true;
     for (int w : feature) holds = holds && (tri(f, 0) == w || tri(f, 1) == w || tri(f, 2) == w);
     if (!holds) continue;
@@ -196,9 +197,23 @@ std::vector<std::array<int, 2>> edge_opposites(const Triangles& triangles, const
   return opposite;
 }
 
+VertexFaces vertex_faces(const Triangles& triangles, int num_vertices) {
+  VertexFaces out;
+  out.start.assign(static_cast<size_t>(num_vertices) + 1, 0);
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) ++out.start[static_cast<size_t>(triangles(f, k)) + 1];
+  for (int v = 0; v < num_vertices; ++v) out.start[static_cast<size_t>(v) + 1] += out.start[static_cast<size_t>(v)];
+  out.faces.resize(static_cast<size_t>(out.start.back()));
+  std::vector<int> next(out.start.begin(), out.start.end() - 1);
+  for (Eigen::Index f = 0; f < triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) out.faces[static_cast<size_t>(next[static_cast<size_t>(triangles(f, k))]++)] = static_cast<int>(f);
+  return out;
+}
+
 PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
                                 const std::vector<std::array<int, 2>>* edges,
-                                const std::vector<std::array<int, 2>>* edge_opposite) {
+                                const std::vector<std::array<int, 2>>* edge_opposite,
+                                std::shared_ptr<const VertexFaces> faces) {
   RECOIL_CHECK((edges == nullptr) == (edge_opposite == nullptr), "give both edges and their opposite vertices, or neither");
   PreparedSurface out;
   out.surface = &surface;
@@ -233,16 +248,7 @@ PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
   for (size_t e = 0; e < out.edges.size(); ++e)
     out.edge_motion[e] = std::max(out.vertex_motion[out.edges[e][0]], out.vertex_motion[out.edges[e][1]]);
   out.edge_opposite = edge_opposite ? *edge_opposite : edge_opposites(surface.triangles, out.edges);
-  out.vertex_face_start.assign(static_cast<size_t>(nv) + 1, 0);
-  for (int f = 0; f < nf; ++f)
-    for (int k = 0; k < 3; ++k) ++out.vertex_face_start[static_cast<size_t>(surface.triangles(f, k)) + 1];
-  for (int v = 0; v < nv; ++v) out.vertex_face_start[v + 1] += out.vertex_face_start[v];
-  out.vertex_faces.resize(static_cast<size_t>(out.vertex_face_start[nv]));
-  {
-    std::vector<int> next(out.vertex_face_start.begin(), out.vertex_face_start.end() - 1);
-    for (int f = 0; f < nf; ++f)
-      for (int k = 0; k < 3; ++k) out.vertex_faces[static_cast<size_t>(next[surface.triangles(f, k)]++)] = f;
-  }
+  out.vertex_faces = faces ? std::move(faces) : std::make_shared<const VertexFaces>(vertex_faces(surface.triangles, nv));
   out.closed = !out.edges.empty() && std::all_of(out.edge_opposite.begin(), out.edge_opposite.end(),
                                                  [](const std::array<int, 2>& o) { return o[0] >= 0; });
   return out;

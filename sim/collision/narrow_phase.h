@@ -85,11 +85,20 @@
 // down exactly on an equal box is held by the top face, not pushed sideways
 // by a side face. The contact solver then keeps resting contacts a small
 // distance apart (contact_model.h), and p - q decides from the next step on.
+#include <memory>
 #include <vector>
 
 #include "sim/collision/collision_types.h"
 
 namespace recoil::sim {
+
+// The triangles around each vertex of a triangle list: those of vertex v are
+// faces[start[v] .. start[v + 1]), in ascending order.
+struct VertexFaces {
+  std::vector<int> start;  // #V + 1
+  std::vector<int> faces;
+};
+VertexFaces vertex_faces(const Triangles& triangles, int num_vertices);
 
 // Per-surface data derived once per step: motions, edges, adjacency.
 struct PreparedSurface {
@@ -102,8 +111,7 @@ struct PreparedSurface {
   std::vector<std::array<int, 2>> edge_opposite;  // #E: third vertices of the edge's two triangles, the one
                                                   // running lo -> hi first (-1, -1 on a boundary,
                                                   // non-manifold or inconsistently wound edge)
-  std::vector<int> vertex_face_start;         // #V + 1: the triangles around vertex v are
-  std::vector<int> vertex_faces;              // vertex_faces[vertex_face_start[v] .. vertex_face_start[v + 1])
+  std::shared_ptr<const VertexFaces> vertex_faces;  // the triangles around each vertex
   bool closed = false;                        // every edge has both triangles, wound consistently
   double max_motion = 0.0;                    // over all vertices
   double length_scale = 0.0;                  // largest |coordinate|, for tolerances
@@ -117,10 +125,12 @@ struct PreparedSurface {
 // Checks shapes and indices (a mismatch is a caller bug: RECOIL_CHECK).
 // `edges` and `edge_opposite`, if given (both or neither), are
 // unique_edges(surface.triangles) and edge_opposites of them from an
-// earlier step with the same triangles: topology, computed once.
+// earlier step with the same triangles, and `faces` its vertex_faces:
+// topology, computed once.
 PreparedSurface prepare_surface(const CollisionSurface& surface, int index,
                                 const std::vector<std::array<int, 2>>* edges = nullptr,
-                                const std::vector<std::array<int, 2>>* edge_opposite = nullptr);
+                                const std::vector<std::array<int, 2>>* edge_opposite = nullptr,
+                                std::shared_ptr<const VertexFaces> faces = nullptr);
 
 // The undirected edges of a triangle list as (lo, hi) vertex pairs, sorted, unique.
 std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles);

@@ -20,11 +20,6 @@
 namespace recoil::test {
 namespace fs = std::filesystem;
 
-static void write_file(const fs::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-}
-
 TEST(SceneFile, DemoSceneParsesIntoWorldRenderAndCamera) {
   const cli::SceneDesc scene = cli::load_scene(source_path("assets/scenes/bunny-drop.json"));
   EXPECT_EQ(scene.name, "bunny-drop");

@@ -22,7 +22,6 @@ const TriMesh& unit_box() {
   return box;
 }
 
-void write_text(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
 std::string obj_text(const TriMesh& m) {
   std::ostringstream s;
@@ -140,11 +139,11 @@ void expect_same_box(const TriMesh& mesh, const Eigen::Vector3d& offset, const s
 TEST(MeshImport, SameClosedBoxFromEveryFormat) {
   const fs::path dir = test::scratch_dir("mesh_import_formats");
   const TriMesh& box = unit_box();
-  write_text(dir / "box.obj", obj_text(box));
-  write_text(dir / "box.ply", ply_text(box));
-  write_text(dir / "box.stl", stl_text(box));
-  write_text(dir / "box.gltf", gltf_text(box));
-  write_text(dir / "box.dae", collada_text(box));
+  test::write_file(dir / "box.obj", obj_text(box));
+  test::write_file(dir / "box.ply", ply_text(box));
+  test::write_file(dir / "box.stl", stl_text(box));
+  test::write_file(dir / "box.gltf", gltf_text(box));
+  test::write_file(dir / "box.dae", collada_text(box));
   for (const char* name : {"box.obj", "box.ply", "box.stl", "box.dae"})
     expect_same_box(import_surface(dir / name), Eigen::Vector3d::Zero(), name);
   expect_same_box(import_surface(dir / "box.gltf"), Eigen::Vector3d(5, 0, 0), "box.gltf (node transform)");
@@ -152,7 +151,7 @@ TEST(MeshImport, SameClosedBoxFromEveryFormat) {
 
 TEST(MeshImport, QuadsAreTriangulatedAndBunnyIsClosed) {
   const fs::path dir = test::scratch_dir("mesh_import_quads");
-  write_text(dir / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
+  test::write_file(dir / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
   EXPECT_EQ(import_surface(dir / "quad.obj").num_triangles(), 2);
   const MeshStats bunny = compute_mesh_stats(import_surface(test::source_path("assets/meshes/bunny.obj")));
   EXPECT_TRUE(bunny.watertight);
@@ -172,13 +171,13 @@ TEST(MeshImport, WeldDropsDegenerateTriangles) {
 
 TEST(MeshImport, BrokenFilesAreBadInputNamingTheFile) {
   const fs::path dir = test::scratch_dir("mesh_import_broken");
-  write_text(dir / "garbage.stl", std::string("\x01\x02solid nonsense \xff\xfe", 20));
-  write_text(dir / "empty.obj", "");
-  write_text(dir / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
-  write_text(dir / "bad_index.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
-  write_text(dir / "truncated.ply", ply_text(unit_box()).substr(0, 200));
-  write_text(dir / "notjson.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [");
-  write_text(dir / "nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
+  test::write_file(dir / "garbage.stl", std::string("\x01\x02solid nonsense \xff\xfe", 20));
+  test::write_file(dir / "empty.obj", "");
+  test::write_file(dir / "points.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\n");
+  test::write_file(dir / "bad_index.obj", "v 0 0 0\nv 1 0 0\nf 1 2 7\n");
+  test::write_file(dir / "truncated.ply", ply_text(unit_box()).substr(0, 200));
+  test::write_file(dir / "notjson.gltf", "{\"asset\": {\"version\": \"2.0\"}, \"meshes\": [");
+  test::write_file(dir / "nan.obj", "v nan 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n");
   fs::create_directories(dir / "folder.obj");
   for (const char* name : {"garbage.stl", "empty.obj", "points.obj", "bad_index.obj", "truncated.ply", "notjson.gltf",
                            "nan.obj", "folder.obj", "missing.obj"}) {

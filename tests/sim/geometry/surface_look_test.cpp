@@ -18,14 +18,13 @@ namespace {
 
 const fs::path kModels = "/usr/share/assimp/models";
 
-void write_text(const fs::path& path, const std::string& text) { std::ofstream(path, std::ios::binary) << text; }
 
 // A unit square of two triangles in an OBJ whose two halves use two materials
 // of `mtl`, with UVs split along the diagonal (a seam: the shared corners
 // have different UVs in each triangle).
 fs::path write_two_material_square(const fs::path& dir, const std::string& mtl) {
-  write_text(dir / "square.mtl", mtl);
-  write_text(dir / "square.obj",
+  test::write_file(dir / "square.mtl", mtl);
+  test::write_file(dir / "square.obj",
              "mtllib square.mtl\n"
              "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
              "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvt 0.5 0.5\n"
@@ -217,7 +216,7 @@ TEST(SurfaceLook, TextureNamedInAnotherCaseOrPathIsFoundBesideTheMesh) {
 
 TEST(SurfaceLook, ABrokenTextureCostsOnlyItself) {
   const fs::path dir = recoil::test::scratch_dir("surface_look_broken");
-  write_text(dir / "broken.png", "\x89PNG\r\n\x1a\n not really");
+  test::write_file(dir / "broken.png", "\x89PNG\r\n\x1a\n not really");
   const fs::path obj = write_two_material_square(dir, "newmtl red\nKd 1 0 0\nmap_Kd broken.png\nnewmtl blue\nKd 0 0 1\n");
   const TriMesh square = import_surface(obj);
   ASSERT_TRUE(square.look);
