@@ -42,7 +42,14 @@ std::optional<ConeNormal> best_generator(const std::vector<Eigen::Vector3d>& con
 
 }  // namespace
 
-double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& generators) {
+double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& all) {
+  // Coplanar triangles (a face split in two) give one generator.
+  std::vector<Eigen::Vector3d> generators;
+  generators.reserve(all.size());
+  for (const Eigen::Vector3d& g : all)
+    if (std::none_of(generators.begin(), generators.end(),
+                     [&](const Eigen::Vector3d& h) { return (g - h).squaredNorm() < 1e-24; }))
+      generators.push_back(g);
   const size_t k = generators.size();
   double best = -1.0;
   for (const Eigen::Vector3d& g : generators) best = std::max(best, x.dot(g));
@@ -63,14 +70,20 @@ double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>&
     }
   }
   if (best >= 1.0) return 1.0;
+  // x = a gi + b gj + c gl with a, b, c >= 0 (Cramer's rule, by triple products).
   for (size_t i = 0; i < k; ++i)
-    for (size_t j = i + 1; j < k; ++j)
+    for (size_t j = i + 1; j < k; ++j) {
+      const Eigen::Vector3d jk_normal = generators[i].cross(generators[j]);
       for (size_t l = j + 1; l < k; ++l) {
-        Eigen::Matrix3d m;
-        m << generators[i], generators[j], generators[l];
-        if (!(std::abs(m.determinant()) > 1e-12)) continue;
-        if (((m.inverse() * x).array() >= 0.0).all()) return 1.0;
+        const Eigen::Vector3d& gi = generators[i];
+        const Eigen::Vector3d& gj = generators[j];
+        const Eigen::Vector3d& gl = generators[l];
+        const double det = jk_normal.dot(gl);
+        if (!(std::abs(det) > 1e-12)) continue;
+        const double a = x.dot(gj.cross(gl)) / det, b = gi.dot(x.cross(gl)) / det, c = jk_normal.dot(x) / det;
+        if (a >= 0.0 && b >= 0.0 && c >= 0.0) return 1.0;
       }
+    }
   return best;
 }
 

@@ -310,7 +310,8 @@ std::optional<ContactCandidate> closed_pair_normal(const PreparedSurface& a, int
   const Eigen::Vector3d aim = rel.norm() > 0.0 ? Eigen::Vector3d(-rel.normalized()) : Eigen::Vector3d::Zero();
   // At an impact p is within rounding of the feature, and d the side it
   // meets it from.
-  const Eigen::Vector3d d = c.toi ? Eigen::Vector3d(at_a(vertex) - exact.evaluate(Points(sb.x0 + s * (sb.x1 - sb.x0)))) : sep0;
+  const Eigen::Vector3d d =
+      c.toi ? Eigen::Vector3d(at_a(vertex) - lerp(exact.evaluate(sb.x0), exact.evaluate(sb.x1), s)) : sep0;
   std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, cone_b.normals, cone_a.normals);
   if (c.toi && !chosen) chosen = impact_cone_normal(aim, cone_b.normals, sep0, margin);
   if (!chosen) return std::nullopt;
