@@ -128,9 +128,6 @@ bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vect
   return d.dot(n_forward) < -kInsideCosine && d.dot(n_back) < -kInsideCosine;
 }
 
-// Unit outward normals, at positions `at`, of the triangles of `s` that hold
-// every one of `feature` (1 to 3 vertices): a vertex's ring, an edge's two
-// triangles, or the triangle itself. Degenerate triangles are left out.
 // The triangles of `s` that hold every one of `feature` (1 to 3 vertices): a
 // vertex's ring, an edge's two triangles, or the triangle itself; and their
 // unit outward normals at positions `at`. Degenerate triangles are left out.
@@ -290,14 +287,17 @@ bool interacts_with_planes(const PreparedSurface& a) { return !is_prescribed(a.s
 
 namespace {
 
-// Finishes a vertex-triangle candidate `c` between two closed surfaces by the
-// rule of feature_cone.h, judged where the pair is: at the impact, else at
-// the start. `exact` is the true closest point on the triangle (at the
-// impact, if any), `sep0` = p - q and `rel` the relative motion over the step.
-std::optional<ContactCandidate> closed_pair_normal(const PreparedSurface& a, int vertex, const PreparedSurface& b,
-                                                   int triangle, const SurfacePoint& exact, ContactCandidate c,
-                                                   const Eigen::Vector3d& sep0, const Eigen::Vector3d& rel,
-                                                   double margin, double tol) {
+// What the features' cones say of a vertex-triangle candidate between two
+// closed surfaces (feature_cone.h): its normal and gap set, no contact, or
+// nothing where every triangle round a feature is degenerate.
+enum class ConeVerdict { contact, no_contact, undecided };
+
+// Judged where the pair is: at the impact, else at the start. `exact` is the
+// true closest point on the triangle (at the impact, if any), `sep0` = p - q
+// at the start and `rel` the relative motion over the step.
+ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const PreparedSurface& b, int triangle,
+                                   const SurfacePoint& exact, const Eigen::Vector3d& sep0, const Eigen::Vector3d& rel,
+                                   double margin, double tol, ContactCandidate& c) {
   const CollisionSurface& sa = *a.surface;
   const CollisionSurface& sb = *b.surface;
   const double s = c.toi.value_or(0.0);
@@ -307,6 +307,7 @@ std::optional<ContactCandidate> closed_pair_normal(const PreparedSurface& a, int
   for (int k = 0; k < exact.count; ++k)
     if (exact.weight[static_cast<size_t>(k)] > 0.0) feature.push_back(exact.vertex[static_cast<size_t>(k)]);
   const FeatureCone cone_b = feature_cone(b, feature, at_b), cone_a = feature_cone(a, {vertex}, at_a);
+  if (cone_b.normals.empty() || cone_a.normals.empty()) return ConeVerdict::undecided;
   const Eigen::Vector3d aim = rel.norm() > 0.0 ? Eigen::Vector3d(-rel.normalized()) : Eigen::Vector3d::Zero();
   // At an impact p is within rounding of the feature, and d the side it
   // meets it from.
@@ -314,10 +315,10 @@ std::optional<ContactCandidate> closed_pair_normal(const PreparedSurface& a, int
       c.toi ? Eigen::Vector3d(at_a(vertex) - lerp(exact.evaluate(sb.x0), exact.evaluate(sb.x1), s)) : sep0;
   std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, cone_b.normals, cone_a.normals);
   if (c.toi && !chosen) chosen = impact_cone_normal(aim, cone_b.normals, sep0, margin);
-  if (!chosen) return std::nullopt;
+  if (!chosen) return ConeVerdict::no_contact;
   // An impact on a face that p started behind is its way out of B after
   // crossing another face first, which that crossing holds.
-  if (c.toi && chosen->normal.dot(sep0) < -tol) return std::nullopt;
+  if (c.toi && chosen->normal.dot(sep0) < -tol) return ConeVerdict::no_contact;
   // The normal of another of the feature's faces, which p lies over: that
   // face's own pair gives the same row.
   const int source = chosen->source;
@@ -326,12 +327,12 @@ std::optional<ContactCandidate> closed_pair_normal(const PreparedSurface& a, int
     if (face != triangle) {
       const TriangleClosestPoint over = closest_point_on_triangle(
           at_a(vertex), at_b(sb.triangles(face, 0)), at_b(sb.triangles(face, 1)), at_b(sb.triangles(face, 2)));
-      if (over.weight[0] > 0.0 && over.weight[1] > 0.0 && over.weight[2] > 0.0) return std::nullopt;
+      if (over.weight[0] > 0.0 && over.weight[1] > 0.0 && over.weight[2] > 0.0) return ConeVerdict::no_contact;
     }
   }
   c.normal = chosen->normal;
   c.gap = c.normal.dot(point_at(sa.x0, vertex) - c.b.evaluate(sb.x0));
-  return c;
+  return ConeVerdict::contact;
 }
 
 }  // namespace
@@ -405,7 +406,11 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const Eigen::Vector3d q0 = exact.evaluate(sb.x0), q1 = exact.evaluate(sb.x1);
   const Eigen::Vector3d sep0 = p0 - q0, rel = (p1 - q1) - sep0;
   const bool touching_at_start = sep0.norm() <= tol;
-  if (a.closed && b.closed) return closed_pair_normal(a, vertex, b, triangle, exact, c, sep0, rel, margin, tol);
+  if (a.closed && b.closed) {
+    const ConeVerdict verdict = judge_by_feature_cones(a, vertex, b, triangle, exact, sep0, rel, margin, tol, c);
+    if (verdict == ConeVerdict::contact) return c;
+    if (verdict == ConeVerdict::no_contact) return std::nullopt;
+  }
   // Touching at the start on an edge or vertex of this triangle: its face
   // normal is only one of the feature's normals (a corner resting exactly on
   // a corner touches the top face and both side faces). Only a face that the
