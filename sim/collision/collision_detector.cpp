@@ -209,12 +209,17 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
     const bool same = sc.faces && sc.triangles.rows() == s.triangles.rows() && sc.triangles == s.triangles &&
                       sc.vertex_faces->start.size() == static_cast<size_t>(s.x0.rows()) + 1;
     if (!same) {
+      // Until the new topology is validated the cache matches nothing, so
+      // a surface rejected below is not taken for the old one next time.
+      sc.faces.reset();
       sc.edges = unique_edges(s.triangles);
       sc.edge_opposite = edge_opposites(s.triangles, sc.edges);
-      sc.vertex_faces = std::make_shared<const VertexFaces>(vertex_faces(s.triangles, static_cast<int>(s.x0.rows())));
     }
-    // Validates the surface before Embree sees it.
-    prepared.push_back(prepare_surface(s, static_cast<int>(i), &sc.edges, &sc.edge_opposite, sc.vertex_faces));
+    // Validates the surface before Embree sees it (and before the vertex
+    // faces index by its triangles' vertices).
+    prepared.push_back(
+        prepare_surface(s, static_cast<int>(i), &sc.edges, &sc.edge_opposite, same ? sc.vertex_faces : nullptr));
+    if (!same) sc.vertex_faces = prepared.back().vertex_faces;
     if (same) {
       sc.faces->update_vertices(s.x0);
     } else {

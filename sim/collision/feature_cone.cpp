@@ -73,14 +73,14 @@ double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>&
   // x = a gi + b gj + c gl with a, b, c >= 0 (Cramer's rule, by triple products).
   for (size_t i = 0; i < k; ++i)
     for (size_t j = i + 1; j < k; ++j) {
-      const Eigen::Vector3d jk_normal = generators[i].cross(generators[j]);
+      const Eigen::Vector3d ij_normal = generators[i].cross(generators[j]);
       for (size_t l = j + 1; l < k; ++l) {
         const Eigen::Vector3d& gi = generators[i];
         const Eigen::Vector3d& gj = generators[j];
         const Eigen::Vector3d& gl = generators[l];
-        const double det = jk_normal.dot(gl);
+        const double det = ij_normal.dot(gl);
         if (!(std::abs(det) > 1e-12)) continue;
-        const double a = x.dot(gj.cross(gl)) / det, b = gi.dot(x.cross(gl)) / det, c = jk_normal.dot(x) / det;
+        const double a = x.dot(gj.cross(gl)) / det, b = gi.dot(x.cross(gl)) / det, c = ij_normal.dot(x) / det;
         if (a >= 0.0 && b >= 0.0 && c >= 0.0) return 1.0;
       }
     }

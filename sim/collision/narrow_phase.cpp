@@ -288,7 +288,7 @@ bool interacts_with_planes(const PreparedSurface& a) { return !is_prescribed(a.s
 namespace {
 
 // What the features' cones say of a vertex-triangle candidate between two
-// closed surfaces (feature_cone.h): its normal and gap set, no contact, or
+// different closed surfaces (feature_cone.h): its normal and gap set, no contact, or
 // nothing where every triangle round a feature is degenerate.
 enum class ConeVerdict { contact, no_contact, undecided };
 
@@ -406,7 +406,7 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const Eigen::Vector3d q0 = exact.evaluate(sb.x0), q1 = exact.evaluate(sb.x1);
   const Eigen::Vector3d sep0 = p0 - q0, rel = (p1 - q1) - sep0;
   const bool touching_at_start = sep0.norm() <= tol;
-  if (a.closed && b.closed) {
+  if (a.index != b.index && a.closed && b.closed) {
     const ConeVerdict verdict = judge_by_feature_cones(a, vertex, b, triangle, exact, sep0, rel, margin, tol, c);
     if (verdict == ConeVerdict::contact) return c;
     if (verdict == ConeVerdict::no_contact) return std::nullopt;

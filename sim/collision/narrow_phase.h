@@ -58,10 +58,15 @@
 // (candidate_reduction.h): one per vertex and touched feature, one per pair of
 // vertices found from both sides.
 //
-// Between two closed surfaces a vertex-triangle pair's normal and whether it
-// is a candidate at all follow feature_cone.h: p - q where it lies in both
-// features' normal cones, else the face normal that does, else no candidate.
-// The rest of this paragraph is the rule for every other pair.
+// Between two different closed surfaces a vertex-triangle pair's normal and
+// whether it is a candidate at all follow feature_cone.h: p - q where it
+// lies in both features' normal cones, else the qualifying face normal
+// nearest it, else no candidate; at an impact, also no candidate on a face p
+// started behind, and a vertex facing none of the faces is held by one it
+// started more than a margin in front of; a fallback normal of another face
+// that p lies over is left to that face's own pair. The rest of this
+// paragraph is the rule for every other pair, and for a closed pair whose
+// triangles round a feature are all degenerate.
 // Normal (from q on B to p on A): (p - q)/|p - q| while the points are apart
 // (so the gap is the distance, >= 0, and open or thin surfaces work from both
 // sides). At an impact found by the continuous check: the face normal

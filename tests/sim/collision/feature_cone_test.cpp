@@ -99,5 +99,16 @@ TEST(FeatureCone, BoxesRestingFaceOnFaceKeepTheirFaceNormal) {
   EXPECT_LE(face_contacts, 50);
 }
 
+
+// The detector caches each surface's vertex faces, which index by the
+// triangles' vertices: a triangle naming a vertex past the end is caught by
+// the surface's check first.
+TEST(FeatureConeDeathTest, ATriangleNamingAVertexPastTheEndIsCaughtFirst) {
+  TriMesh box = make_box(Eigen::Vector3d::Constant(0.1), 1);
+  box.triangles(3, 1) = static_cast<int>(box.vertices.rows());
+  const std::vector<CollisionSurface> surfaces = {testing::moving_surface(box, 1, BodyKind::rigid, Eigen::Vector3d::Zero())};
+  EXPECT_DEATH(CollisionDetector({0.002, 1}).detect(surfaces, {}), "triangle 3 has vertex 8");
+}
+
 }  // namespace
 }  // namespace recoil::sim
