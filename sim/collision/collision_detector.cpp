@@ -219,10 +219,10 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
     // faces index by its triangles' vertices).
     prepared.push_back(
         prepare_surface(s, static_cast<int>(i), &sc.edges, &sc.edge_opposite, same ? sc.vertex_faces : nullptr));
-    if (!same) sc.vertex_faces = prepared.back().vertex_faces;
     if (same) {
       sc.faces->update_vertices(s.x0);
     } else {
+      sc.vertex_faces = prepared.back().vertex_faces;
       sc.triangles = s.triangles;
       sc.faces = std::make_unique<TriangleScene>(m_impl->device, s.x0, s.triangles, /*dynamic=*/true);
       sc.edge_boxes = std::make_unique<BoxScene>(m_impl->device);

@@ -42,14 +42,17 @@ std::optional<ConeNormal> best_generator(const std::vector<Eigen::Vector3d>& con
 
 }  // namespace
 
-double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& all) {
-  // Coplanar triangles (a face split in two) give one generator.
-  std::vector<Eigen::Vector3d> generators;
-  generators.reserve(all.size());
-  for (const Eigen::Vector3d& g : all)
-    if (std::none_of(generators.begin(), generators.end(),
+std::vector<Eigen::Vector3d> distinct_directions(const std::vector<Eigen::Vector3d>& directions) {
+  std::vector<Eigen::Vector3d> distinct;
+  distinct.reserve(directions.size());
+  for (const Eigen::Vector3d& g : directions)
+    if (std::none_of(distinct.begin(), distinct.end(),
                      [&](const Eigen::Vector3d& h) { return (g - h).squaredNorm() < 1e-24; }))
-      generators.push_back(g);
+      distinct.push_back(g);
+  return distinct;
+}
+
+double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& generators) {
   const size_t k = generators.size();
   double best = -1.0;
   for (const Eigen::Vector3d& g : generators) best = std::max(best, x.dot(g));

@@ -33,8 +33,14 @@
 namespace recoil::sim {
 
 // Largest cosine between unit x and a direction of the cone spanned by the
-// unit vectors `generators` (1 inside; -1 for an empty set).
+// unit vectors `generators` (1 inside; -1 for an empty set). The cost grows
+// with the cube of their number: give each direction once
+// (distinct_directions).
 double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& generators);
+
+// `directions` with repeats (to rounding) left out, in their first order:
+// the triangles of one flat face give one generator.
+std::vector<Eigen::Vector3d> distinct_directions(const std::vector<Eigen::Vector3d>& directions);
 
 // The chosen normal (unit, from B to A) and where it came from: -1 for d,
 // i < #cone_b for B's face normal i, #cone_b + j for A's face normal j reversed.
@@ -44,7 +50,8 @@ struct ConeNormal {
 };
 
 // The rule above for direction `d` (p - q, any length, may be zero),
-// B's outward unit face normals around the feature and A's around the vertex;
+// B's outward unit face normals around the feature and A's around the vertex
+// (distinct_directions of each);
 // `aim` (unit or zero: the reversed relative motion) breaks ties when d is
 // zero. None when no direction qualifies.
 std::optional<ConeNormal> feature_cone_normal(const Eigen::Vector3d& d, const Eigen::Vector3d& aim,

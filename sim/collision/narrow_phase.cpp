@@ -313,18 +313,20 @@ ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const P
   // meets it from.
   const Eigen::Vector3d d =
       c.toi ? Eigen::Vector3d(at_a(vertex) - lerp(exact.evaluate(sb.x0), exact.evaluate(sb.x1), s)) : sep0;
-  std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, cone_b.normals, cone_a.normals);
-  if (c.toi && !chosen) chosen = impact_cone_normal(aim, cone_b.normals, sep0, margin);
+  const std::vector<Eigen::Vector3d> generators_b = distinct_directions(cone_b.normals);
+  const std::vector<Eigen::Vector3d> generators_a = distinct_directions(cone_a.normals);
+  std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, generators_b, generators_a);
+  if (c.toi && !chosen) chosen = impact_cone_normal(aim, generators_b, sep0, margin);
   if (!chosen) return ConeVerdict::no_contact;
   // An impact on a face that p started behind is its way out of B after
   // crossing another face first, which that crossing holds.
   if (c.toi && chosen->normal.dot(sep0) < -tol) return ConeVerdict::no_contact;
-  // The normal of another of the feature's faces, which p lies over: that
+  // The normal of other faces of the feature, one of which p lies over: that
   // face's own pair gives the same row.
-  const int source = chosen->source;
-  if (source >= 0 && source < static_cast<int>(cone_b.faces.size())) {
-    const int face = cone_b.faces[static_cast<size_t>(source)];
-    if (face != triangle) {
+  if (chosen->source >= 0 && chosen->source < static_cast<int>(generators_b.size())) {
+    for (size_t i = 0; i < cone_b.faces.size(); ++i) {
+      const int face = cone_b.faces[i];
+      if (face == triangle || (cone_b.normals[i] - chosen->normal).squaredNorm() >= 1e-24) continue;
       const TriangleClosestPoint over = closest_point_on_triangle(
           at_a(vertex), at_b(sb.triangles(face, 0)), at_b(sb.triangles(face, 1)), at_b(sb.triangles(face, 2)));
       if (over.weight[0] > 0.0 && over.weight[1] > 0.0 && over.weight[2] > 0.0) return ConeVerdict::no_contact;
