@@ -6,6 +6,8 @@
 #include <optional>
 #include <set>
 #include <tuple>
+#include <utility>
+#include <vector>
 
 namespace recoil::sim {
 namespace {
@@ -72,11 +74,19 @@ auto feature_group(const ContactCandidate& c) { return std::make_tuple(vertex_gr
 // The order both per-vertex rules read: by (surface A, vertex, surface B),
 // then touched feature, then strength.
 void sort_by_vertex_and_feature(std::vector<ContactCandidate>& vertex_triangle) {
-  std::sort(vertex_triangle.begin(), vertex_triangle.end(), [&](const ContactCandidate& l, const ContactCandidate& r) {
-    const auto group_l = feature_group(l), group_r = feature_group(r);
-    if (group_l != group_r) return group_l < group_r;
-    return stronger(l, r);
+  // Each candidate's group is computed once, not at every comparison.
+  using Group = decltype(feature_group(std::declval<const ContactCandidate&>()));
+  std::vector<std::pair<Group, size_t>> order;
+  order.reserve(vertex_triangle.size());
+  for (size_t i = 0; i < vertex_triangle.size(); ++i) order.emplace_back(feature_group(vertex_triangle[i]), i);
+  std::sort(order.begin(), order.end(), [&](const auto& l, const auto& r) {
+    if (l.first != r.first) return l.first < r.first;
+    return stronger(vertex_triangle[l.second], vertex_triangle[r.second]);
   });
+  std::vector<ContactCandidate> sorted;
+  sorted.reserve(vertex_triangle.size());
+  for (const auto& entry : order) sorted.push_back(std::move(vertex_triangle[entry.second]));
+  vertex_triangle.swap(sorted);
 }
 
 // Whether triangle point `b` (a candidate's closest point on its triangle)

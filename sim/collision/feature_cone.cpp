@@ -42,14 +42,12 @@ std::optional<ConeNormal> best_generator(const std::vector<Eigen::Vector3d>& con
 
 }  // namespace
 
-std::vector<Eigen::Vector3d> distinct_directions(const std::vector<Eigen::Vector3d>& directions) {
-  std::vector<Eigen::Vector3d> distinct;
-  distinct.reserve(directions.size());
+void distinct_directions(const std::vector<Eigen::Vector3d>& directions, std::vector<Eigen::Vector3d>& distinct) {
+  distinct.clear();
   for (const Eigen::Vector3d& g : directions)
     if (std::none_of(distinct.begin(), distinct.end(),
                      [&](const Eigen::Vector3d& h) { return (g - h).squaredNorm() < 1e-24; }))
       distinct.push_back(g);
-  return distinct;
 }
 
 double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& generators) {

@@ -38,9 +38,10 @@ namespace recoil::sim {
 // (distinct_directions).
 double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& generators);
 
-// `directions` with repeats (to rounding) left out, in their first order:
-// the triangles of one flat face give one generator.
-std::vector<Eigen::Vector3d> distinct_directions(const std::vector<Eigen::Vector3d>& directions);
+// `directions` with repeats (to rounding) left out, in their first order,
+// into `distinct` (cleared first): the triangles of one flat face give one
+// generator.
+void distinct_directions(const std::vector<Eigen::Vector3d>& directions, std::vector<Eigen::Vector3d>& distinct);
 
 // The chosen normal (unit, from B to A) and where it came from: -1 for d,
 // i < #cone_b for B's face normal i, #cone_b + j for A's face normal j reversed.

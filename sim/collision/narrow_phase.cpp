@@ -128,30 +128,34 @@ bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vect
   return d.dot(n_forward) < -kInsideCosine && d.dot(n_back) < -kInsideCosine;
 }
 
-// The triangles of `s` that hold every one of `feature` (1 to 3 vertices): a
-// vertex's ring, an edge's two triangles, or the triangle itself; and their
-// unit outward normals at positions `at`. Degenerate triangles are left out.
+// The triangles of `s` that hold every one of `feature` (its first `count`
+// entries, 1 to 3 vertices): a vertex's ring, an edge's two triangles, or the
+// triangle itself; and their unit outward normals at positions `at`.
+// Degenerate triangles are left out. `cone` is cleared first.
 struct FeatureCone {
   std::vector<int> faces;
   std::vector<Eigen::Vector3d> normals;
 };
 template <typename At>
-FeatureCone feature_cone(const PreparedSurface& s, const std::vector<int>& feature, At at) {
-  FeatureCone cone;
+void feature_cone(const PreparedSurface& s, const std::array<int, 3>& feature, int count, At at, FeatureCone& cone) {
+  cone.faces.clear();
+  cone.normals.clear();
   const Triangles& tri = s.surface->triangles;
-  const int v = feature.front();
+  const int v = feature[0];
   const VertexFaces& around = *s.vertex_faces;
   for (int i = around.start[static_cast<size_t>(v)]; i < around.start[static_cast<size_t>(v) + 1]; ++i) {
     const int f = around.faces[static_cast<size_t>(i)];
     bool holds = true;
-    for (int w : feature) holds = holds && (tri(f, 0) == w || tri(f, 1) == w || tri(f, 2) == w);
+    for (int k = 0; k < count; ++k) {
+      const int w = feature[static_cast<size_t>(k)];
+      holds = holds && (tri(f, 0) == w || tri(f, 1) == w || tri(f, 2) == w);
+    }
     if (!holds) continue;
     const Eigen::Vector3d n = face_normal(at(tri(f, 0)), at(tri(f, 1)), at(tri(f, 2)));
     if (n.isZero()) continue;
     cone.faces.push_back(f);
     cone.normals.push_back(n.normalized());
   }
-  return cone;
 }
 
 }  // namespace
@@ -303,18 +307,31 @@ ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const P
   const double s = c.toi.value_or(0.0);
   auto at_a = [&](int v) { return lerp(point_at(sa.x0, v), point_at(sa.x1, v), s); };
   auto at_b = [&](int v) { return lerp(point_at(sb.x0, v), point_at(sb.x1, v), s); };
-  std::vector<int> feature;
+  // Reused across calls (this runs for every nearby pair of two closed
+  // surfaces, on each search thread), so the cones allocate nothing once warm.
+  struct Scratch {
+    FeatureCone cone_a, cone_b;
+    std::vector<Eigen::Vector3d> generators_a, generators_b;
+  };
+  thread_local Scratch scratch;
+  std::array<int, 3> feature = {-1, -1, -1};
+  int count = 0;
   for (int k = 0; k < exact.count; ++k)
-    if (exact.weight[static_cast<size_t>(k)] > 0.0) feature.push_back(exact.vertex[static_cast<size_t>(k)]);
-  const FeatureCone cone_b = feature_cone(b, feature, at_b), cone_a = feature_cone(a, {vertex}, at_a);
+    if (exact.weight[static_cast<size_t>(k)] > 0.0) feature[static_cast<size_t>(count++)] = exact.vertex[static_cast<size_t>(k)];
+  const FeatureCone& cone_b = scratch.cone_b;
+  const FeatureCone& cone_a = scratch.cone_a;
+  feature_cone(b, feature, count, at_b, scratch.cone_b);
+  feature_cone(a, {vertex, -1, -1}, 1, at_a, scratch.cone_a);
   if (cone_b.normals.empty() || cone_a.normals.empty()) return ConeVerdict::undecided;
   const Eigen::Vector3d aim = rel.norm() > 0.0 ? Eigen::Vector3d(-rel.normalized()) : Eigen::Vector3d::Zero();
   // At an impact p is within rounding of the feature, and d the side it
   // meets it from.
   const Eigen::Vector3d d =
       c.toi ? Eigen::Vector3d(at_a(vertex) - lerp(exact.evaluate(sb.x0), exact.evaluate(sb.x1), s)) : sep0;
-  const std::vector<Eigen::Vector3d> generators_b = distinct_directions(cone_b.normals);
-  const std::vector<Eigen::Vector3d> generators_a = distinct_directions(cone_a.normals);
+  distinct_directions(cone_b.normals, scratch.generators_b);
+  distinct_directions(cone_a.normals, scratch.generators_a);
+  const std::vector<Eigen::Vector3d>& generators_b = scratch.generators_b;
+  const std::vector<Eigen::Vector3d>& generators_a = scratch.generators_a;
   std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, generators_b, generators_a);
   if (c.toi && !chosen) chosen = impact_cone_normal(aim, generators_b, sep0, margin);
   if (!chosen) return ConeVerdict::no_contact;
