@@ -39,8 +39,8 @@ namespace recoil::sim {
 double cone_cosine(const Eigen::Vector3d& x, const std::vector<Eigen::Vector3d>& generators);
 
 // `directions` with repeats (to rounding) left out, in their first order,
-// into `distinct` (cleared first): the triangles of one flat face give one
-// generator.
+// into `distinct` (cleared first, so not `directions` itself): the triangles
+// of one flat face give one generator.
 void distinct_directions(const std::vector<Eigen::Vector3d>& directions, std::vector<Eigen::Vector3d>& distinct);
 
 // The chosen normal (unit, from B to A) and where it came from: -1 for d,

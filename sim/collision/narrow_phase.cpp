@@ -308,7 +308,7 @@ ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const P
   auto at_a = [&](int v) { return lerp(point_at(sa.x0, v), point_at(sa.x1, v), s); };
   auto at_b = [&](int v) { return lerp(point_at(sb.x0, v), point_at(sb.x1, v), s); };
   // Reused across calls (this runs for every nearby pair of two closed
-  // surfaces, on each search thread), so the cones allocate nothing once warm.
+  // surfaces): each search thread allocates its cones once, not per pair.
   struct Scratch {
     FeatureCone cone_a, cone_b;
     std::vector<Eigen::Vector3d> generators_a, generators_b;
@@ -318,6 +318,7 @@ ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const P
   int count = 0;
   for (int k = 0; k < exact.count; ++k)
     if (exact.weight[static_cast<size_t>(k)] > 0.0) feature[static_cast<size_t>(count++)] = exact.vertex[static_cast<size_t>(k)];
+  if (count == 0) return ConeVerdict::undecided;
   const FeatureCone& cone_b = scratch.cone_b;
   const FeatureCone& cone_a = scratch.cone_a;
   feature_cone(b, feature, count, at_b, scratch.cone_b);
