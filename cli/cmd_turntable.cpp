@@ -54,9 +54,10 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
   cmd->footer(
       "The mesh is stood on a ground plane, its --up axis (default +Y) turned to world +Y, and the\n"
       "camera circles it once in --turn-frames frames; frames are written as DIR/frame_0001.png, ...\n"
-      "--frames picks which of them to write, as in `run`. With --settle the mesh is released just\n"
-      "above where it stands and simulated (not drawn) until it rests, at most --settle-seconds, so the\n"
-      "physics picks its stable pose; the orbit then frames the resting mesh. Like `run`, it writes\n"
+      "--frames picks which of them to write, as in `run`; frames past the turn go on turning.\n"
+      "With --settle the mesh is released just above where it stands and simulated (not drawn) until\n"
+      "it rests, at most --settle-seconds, so the physics picks its stable pose; the orbit then frames\n"
+      "the resting mesh. Like `run`, it writes\n"
       "scene.json, stats.jsonl and run.json beside the frames, and takes --video, --resume and --no-render.\n"
       "As in `drop`, a mesh whose longest side is outside 5 cm - 2 m is scaled to 30 cm, and a settling\n"
       "mesh collides through a simplified copy sized by --collision-triangles or --collision-edge.\n\n"
