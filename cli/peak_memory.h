@@ -1,5 +1,6 @@
 #pragma once
-// The run's peak resident memory, for run.json: what a farm job must ask for.
+// The process's resident memory: its peak, for run.json (what a farm job
+// must ask for), and its present size, where a run's memory estimate starts.
 #include <optional>
 
 namespace recoil::cli {
@@ -10,5 +11,8 @@ namespace recoil::cli {
 // (the mesh reader, which assimp's scene is held in, and the video encoder);
 // nullopt where /proc is not available.
 std::optional<double> peak_memory_mib();
+
+// MiB this process holds now (Linux VmRSS); nullopt where /proc is not available.
+std::optional<double> resident_memory_mib();
 
 }  // namespace recoil::cli

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "cli/format_number.h"
+#include "cli/peak_memory.h"
 #include "cli/render_options.h"
 #include "cli/scene_limits.h"
 #include "core/error.h"
@@ -34,7 +35,7 @@ double lattice_tets(const sim::DeformableBodyDesc& body) {
   return 6.0 * cells;
 }
 
-std::string gib(double bytes) { return format_number("%.1f", bytes / (1024.0 * 1024.0 * 1024.0)) + " GiB"; }
+std::string gib(double bytes) { return format_number("%.3g", bytes / (1024.0 * 1024.0 * 1024.0)) + " GiB"; }
 
 }  // namespace
 
@@ -47,6 +48,8 @@ double memory_limit_bytes(double max_memory_gib) {
 
 MemoryEstimate estimate_memory(const SceneDesc& scene, bool render) {
   MemoryEstimate estimate;
+  estimate.in_use = resident_memory_mib().value_or(0.0) * 1024.0 * 1024.0;
+  estimate.bytes = estimate.in_use;
   auto add = [&](double bytes, const std::string& field, const std::string& what) {
     estimate.bytes += bytes;
     if (bytes > estimate.largest_bytes) {
@@ -94,7 +97,8 @@ void check_work_limits(const SceneDesc& scene, int last_frame, bool render, doub
   const MemoryEstimate memory = estimate_memory(scene, render);
   if (memory.bytes > memory_limit)
     throw bad_input(file + ": " + memory.largest_field + ": the run needs about " + gib(memory.bytes) + " (" +
-                    gib(memory.largest_bytes) + " for " + memory.largest_what + "), more than the " +
+                    gib(memory.largest_bytes) + " for " + memory.largest_what + ", " + gib(memory.in_use) +
+                    " in use before it starts), more than the " +
                     gib(memory_limit) + " allowed (--max-memory)");
 }
 

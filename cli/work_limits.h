@@ -13,7 +13,8 @@ namespace recoil::cli {
 double memory_limit_bytes(double max_memory_gib);
 
 struct MemoryEstimate {
-  double bytes = 0.0;          // the whole run
+  double bytes = 0.0;          // the whole run, `in_use` included
+  double in_use = 0.0;         // what the process holds already: libraries, imported meshes
   double largest_bytes = 0.0;  // its largest single part
   std::string largest_field;   // the JSON pointer that sets that part
   std::string largest_what;    // "84.9 million tetrahedra", "16384x16384 pixels at msaa 4"

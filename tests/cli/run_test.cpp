@@ -312,6 +312,18 @@ TEST(DropCommand, SeededPileReproducesAndSavesASceneRunAccepts) {
   EXPECT_EQ(without_timings(sr[1]), without_timings(sa[1]));  // the saved scene is the scene that ran
 }
 
+TEST(DropCommand, AMemoryLimitBelowWhatTheProcessHoldsRefusesTheRun) {
+  // The bunny's tets and buffers are a few MiB; the process itself (libraries,
+  // the imported mesh) is tens: a 10 MiB limit must count both.
+  const fs::path dir = scratch_dir("drop_memory_limit");
+  const CommandResult r = run_recoil("--max-memory 0.01 drop " + shell_quote(source_path("assets/meshes/bunny.obj")) +
+                                     " --no-render --seconds 0.1 -o " + shell_quote(dir / "out"));
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_NE(r.err.find("in use before it starts), more than the 0.01 GiB allowed (--max-memory)"), std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out" / "run.json"));
+}
+
 TEST(RunCommand, VideoWithoutFfmpegOrOfAnUnknownKindFailsAtOnce) {
   const fs::path dir = scratch_dir("run_video");
   const std::string scene = shell_quote(source_path("assets/scenes/bunny-drop.json"));
