@@ -4,11 +4,15 @@
 #include <unistd.h>
 
 #include <cctype>
+#include <cerrno>
 #include <csignal>
 #include <cstdlib>
+#include <fstream>
 #include <sstream>
 
+#include "cli/output_dir.h"
 #include "cli/shell_quote.h"
+#include "core/atomic_write.h"
 #include "core/error.h"
 #include "core/lower_case.h"
 
@@ -64,24 +68,49 @@ void require_video(const fs::path& path) {
 }
 
 VideoEncoder::VideoEncoder(const fs::path& path, int width, int height, double fps)
-    : m_path(path), m_partial(path.string() + ".partial"), m_width(width), m_height(height) {
+    : m_path(path), m_partial(path.string() + ".partial"), m_log(path.string() + ".log"), m_width(width),
+      m_height(height) {
   require_video(path);
   const VideoFormat& format = *format_of(path);
+  // ffmpeg opens the file only once frames arrive: whether it can be written
+  // is found out here, before anything is simulated, as for the other outputs.
+  if (path.has_parent_path()) ensure_output_dir(path.parent_path());
+  errno = 0;
+  if (std::FILE* probe = std::fopen(m_partial.c_str(), "wb")) {
+    std::fclose(probe);
+  } else {
+    throw output_error("cannot write " + m_partial.string() + ": " + errno_message(errno));
+  }
   // A dead ffmpeg must surface as a write error, not kill us with SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);
   std::ostringstream command;
   command << shell_quote(find_ffmpeg().string()) << " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgba -s "
           << width << "x" << height << " -framerate " << fps << " -i - " << format.codec << " -f " << format.muxer
-          << " " << shell_quote(m_partial.string());
+          << " " << shell_quote(m_partial.string()) << " 2> " << shell_quote(m_log.string());
   m_pipe = ::popen(command.str().c_str(), "w");
-  if (!m_pipe) throw output_error("cannot start ffmpeg for " + path.string());
+  if (!m_pipe) {
+    std::error_code ec;
+    fs::remove(m_partial, ec);
+    throw output_error("cannot start ffmpeg for " + path.string());
+  }
 }
 
 VideoEncoder::~VideoEncoder() {
-  if (!m_pipe) return;
-  ::pclose(m_pipe);
   std::error_code ec;
-  fs::remove(m_partial, ec);
+  if (m_pipe) {
+    ::pclose(m_pipe);
+    fs::remove(m_partial, ec);
+  }
+  fs::remove(m_log, ec);
+}
+
+// The last line ffmpeg printed (its own error), or empty.
+std::string VideoEncoder::ffmpeg_said() const {
+  std::ifstream log(m_log);
+  std::string line, last;
+  while (std::getline(log, line))
+    if (!line.empty()) last = line;
+  return last;
 }
 
 void VideoEncoder::add(const render::Image& image) {
@@ -89,7 +118,8 @@ void VideoEncoder::add(const render::Image& image) {
   if (image.width != m_width || image.height != m_height)
     throw output_error("video " + m_path.string() + ": frame size changed");
   if (std::fwrite(image.rgba.data(), 1, image.rgba.size(), m_pipe) != image.rgba.size())
-    throw output_error("video " + m_path.string() + ": ffmpeg stopped accepting frames");
+    throw output_error("video " + m_path.string() + ": ffmpeg stopped accepting frames" +
+                       (ffmpeg_said().empty() ? "" : " (" + ffmpeg_said() + ")"));
 }
 
 void VideoEncoder::finish() {
@@ -99,7 +129,8 @@ void VideoEncoder::finish() {
   std::error_code ec;
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     fs::remove(m_partial, ec);
-    throw output_error("ffmpeg failed to write " + m_path.string());
+    throw output_error("ffmpeg failed to write " + m_path.string() +
+                       (ffmpeg_said().empty() ? "" : " (" + ffmpeg_said() + ")"));
   }
   fs::rename(m_partial, m_path, ec);
   if (ec) {

@@ -5,7 +5,9 @@
 // optional dependency: require_video() lets a command fail at once, before
 // simulating, when it is missing or the extension is unknown. The video is
 // written to FILE.partial and renamed into place once ffmpeg has finished, so
-// a failed or interrupted run leaves no video rather than a cut one.
+// a failed or interrupted run leaves no video rather than a cut one. Its
+// messages go to FILE.log, whose last line a failure quotes; the log is
+// removed with the encoder.
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -35,8 +37,11 @@ class VideoEncoder {
   void finish();
 
  private:
+  std::string ffmpeg_said() const;
+
   std::FILE* m_pipe = nullptr;
   std::filesystem::path m_path, m_partial;
+  std::filesystem::path m_log;  // ffmpeg's stderr, for the message when it fails
   int m_width, m_height;
 };
 

@@ -324,6 +324,20 @@ TEST(DropCommand, AMemoryLimitBelowWhatTheProcessHoldsRefusesTheRun) {
   EXPECT_FALSE(fs::exists(dir / "out" / "run.json"));
 }
 
+TEST(DropCommand, AVideoThatCannotBeWrittenFailsBeforeTheFirstFrame) {
+  const fs::path dir = scratch_dir("drop_video_unwritable");
+  // A folder where the partial video would go: even root cannot open it as a file.
+  fs::create_directories(dir / "v.gif.partial");
+  const CommandResult r = run_recoil("drop " + shell_quote(source_path("assets/meshes/bunny.obj")) +
+                                     " --seconds 0.1 --resolution 64x48 --video " + shell_quote(dir / "v.gif") +
+                                     " -o " + shell_quote(dir / "out"));
+  EXPECT_EQ(r.exit_code, 4);
+  EXPECT_EQ(r.err, "recoil: error: cannot write " + (dir / "v.gif.partial").string() + ": Is a directory\n");
+  EXPECT_FALSE(fs::exists(dir / "out" / "frame_0001.png"));
+  EXPECT_FALSE(fs::exists(dir / "v.gif"));
+  EXPECT_FALSE(fs::exists(dir / "v.gif.log"));
+}
+
 TEST(RunCommand, VideoWithoutFfmpegOrOfAnUnknownKindFailsAtOnce) {
   const fs::path dir = scratch_dir("run_video");
   const std::string scene = shell_quote(source_path("assets/scenes/bunny-drop.json"));

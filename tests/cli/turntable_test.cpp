@@ -175,6 +175,7 @@ TEST(TurntableCommand, VideoAsMp4AndGif) {
     if (std::string(name) == "turn.gif") EXPECT_EQ(video.substr(0, 6), "GIF89a");
     else EXPECT_EQ(video.substr(4, 4), "ftyp");
     EXPECT_FALSE(fs::exists(dir / (std::string(name) + ".partial")));
+    EXPECT_FALSE(fs::exists(dir / (std::string(name) + ".log")));
   }
   EXPECT_TRUE(fs::exists(dir / "frames" / "frame_0006.png"));
 }
