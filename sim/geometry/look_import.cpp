@@ -132,6 +132,13 @@ RgbaImage get_image(ByteReader& in) {
   return image;
 }
 
+// Whether the file's format can carry materials at all: OFF, PLY and STL
+// carry geometry and, at most, vertex colours (read apart from materials).
+bool format_has_materials(const fs::path& file) {
+  const std::string extension = lower_case(file.extension().string());
+  return extension != ".off" && extension != ".ply" && extension != ".stl";
+}
+
 }  // namespace
 
 std::vector<LookMaterial> read_materials(const aiScene& scene, const fs::path& mesh_file,
@@ -146,8 +153,10 @@ std::vector<LookMaterial> read_materials(const aiScene& scene, const fs::path& m
     }
     aiString name;
     if (material->Get(AI_MATKEY_NAME, name) == AI_SUCCESS) m.name = printable(name.C_Str());
-    // assimp invents a grey "DefaultMaterial" for files that have none: that is no colour of the file's.
-    if (m.name != AI_DEFAULT_MATERIAL_NAME) {
+    // assimp invents a material for files that have none (a grey
+    // "DefaultMaterial", or an unnamed grey or white one for OFF and PLY):
+    // that is no colour of the file's.
+    if (m.name != AI_DEFAULT_MATERIAL_NAME && format_has_materials(mesh_file)) {
       aiColor4D color;
       if (material->Get(AI_MATKEY_BASE_COLOR, color) == AI_SUCCESS ||
           material->Get(AI_MATKEY_COLOR_DIFFUSE, color) == AI_SUCCESS) {

@@ -118,6 +118,9 @@ TEST(SurfaceLook, PlyVertexColoursArePerCorner) {
 TEST(SurfaceLook, PlainMeshesHaveNone) {
   EXPECT_FALSE(import_surface(recoil::test::source_path("assets/meshes/bunny.obj")).look);
   EXPECT_FALSE(import_surface(kModels / "STL/Spider_ascii.stl").look);
+  // assimp gives these formats a grey or white material of its own.
+  EXPECT_FALSE(import_surface(kModels / "OFF/Cube.off").look);
+  EXPECT_FALSE(import_surface(kModels / "PLY/cube.ply").look);
 }
 
 TEST(SurfaceLook, MaterialsUvSeamsAndAMissingTexture) {
