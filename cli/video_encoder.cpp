@@ -104,13 +104,13 @@ VideoEncoder::~VideoEncoder() {
   fs::remove(m_log, ec);
 }
 
-// The last line ffmpeg printed (its own error), or empty.
+// " (the last line ffmpeg printed)", its own error, or empty when it printed nothing.
 std::string VideoEncoder::ffmpeg_said() const {
   std::ifstream log(m_log);
   std::string line, last;
   while (std::getline(log, line))
     if (!line.empty()) last = line;
-  return last;
+  return last.empty() ? "" : " (" + last + ")";
 }
 
 void VideoEncoder::add(const render::Image& image) {
@@ -118,8 +118,7 @@ void VideoEncoder::add(const render::Image& image) {
   if (image.width != m_width || image.height != m_height)
     throw output_error("video " + m_path.string() + ": frame size changed");
   if (std::fwrite(image.rgba.data(), 1, image.rgba.size(), m_pipe) != image.rgba.size())
-    throw output_error("video " + m_path.string() + ": ffmpeg stopped accepting frames" +
-                       (ffmpeg_said().empty() ? "" : " (" + ffmpeg_said() + ")"));
+    throw output_error("video " + m_path.string() + ": ffmpeg stopped accepting frames" + ffmpeg_said());
 }
 
 void VideoEncoder::finish() {
@@ -129,8 +128,7 @@ void VideoEncoder::finish() {
   std::error_code ec;
   if (status == -1 || !WIFEXITED(status) || WEXITSTATUS(status) != 0) {
     fs::remove(m_partial, ec);
-    throw output_error("ffmpeg failed to write " + m_path.string() +
-                       (ffmpeg_said().empty() ? "" : " (" + ffmpeg_said() + ")"));
+    throw output_error("ffmpeg failed to write " + m_path.string() + ffmpeg_said());
   }
   fs::rename(m_partial, m_path, ec);
   if (ec) {

@@ -44,22 +44,6 @@ std::optional<VertexPair> vertex_pair(const ContactCandidate& c, bool& flipped) 
 
 auto vertex_group(const ContactCandidate& c) { return std::make_tuple(c.surface_a, c.primitive_a, c.surface_b); }
 
-// Where on B a vertex-triangle candidate touches: the vertices with a
-// non-zero weight (a vertex, an edge or the triangle's interior), sorted,
-// unused entries -1.
-std::array<int, 3> touched_feature(const SurfacePoint& b) {
-  std::array<int, 3> feature = {-1, -1, -1};
-  int n = 0;
-  for (int i = 0; i < b.count; ++i)
-    if (b.weight[i] != 0.0) feature[static_cast<size_t>(n++)] = b.vertex[i];
-  // Insertion sort by hand: std::sort over the first n entries of a
-  // three-element array trips GCC 12's -Warray-bounds.
-  for (int i = 1; i < n; ++i)
-    for (int j = i; j > 0 && feature[static_cast<size_t>(j)] < feature[static_cast<size_t>(j - 1)]; --j)
-      std::swap(feature[static_cast<size_t>(j)], feature[static_cast<size_t>(j - 1)]);
-  return feature;
-}
-
 // Where one vertex's candidates against one surface start and end in a list
 // sorted by vertex_group: [begin, end) of the group starting at `begin`.
 size_t vertex_group_end(const std::vector<ContactCandidate>& sorted, size_t begin) {
@@ -69,7 +53,7 @@ size_t vertex_group_end(const std::vector<ContactCandidate>& sorted, size_t begi
 }
 
 // One vertex of A against one touched feature of surface B.
-auto feature_group(const ContactCandidate& c) { return std::make_tuple(vertex_group(c), touched_feature(c.b)); }
+auto feature_group(const ContactCandidate& c) { return std::make_tuple(vertex_group(c), c.b.touched_feature()); }
 
 // The order both per-vertex rules read: by (surface A, vertex, surface B),
 // then touched feature, then strength.
@@ -114,7 +98,7 @@ std::vector<ContactCandidate> drop_points_beyond_a_closer_face(std::vector<Conta
     end = vertex_group_end(sorted, begin);
     if (!is_prescribed(surfaces[static_cast<size_t>(sorted[begin].surface_b)].kind)) continue;
     features.clear();
-    for (size_t i = begin; i < end; ++i) features.push_back(touched_feature(sorted[i].b));
+    for (size_t i = begin; i < end; ++i) features.push_back(sorted[i].b.touched_feature());
     for (size_t i = begin; i < end; ++i) {
       const std::array<int, 3>& feature = features[i - begin];
       if (feature[2] >= 0) continue;  // the triangle's interior: a face's own normal

@@ -6,6 +6,7 @@
 // v + w x r for rigid ones).
 #include <array>
 #include <optional>
+#include <utility>
 #include <vector>
 
 #include "sim/body/body_kind.h"
@@ -57,6 +58,21 @@ struct SurfacePoint {
     Eigen::Vector3d p = Eigen::Vector3d::Zero();
     for (int i = 0; i < count; ++i) p += weight[i] * x.row(vertex[i]).transpose();
     return p;
+  }
+
+  // The feature the point lies on: the vertices with a non-zero weight (a
+  // vertex, an edge or the triangle's interior), ascending, unused entries -1.
+  std::array<int, 3> touched_feature() const {
+    std::array<int, 3> feature = {-1, -1, -1};
+    int n = 0;
+    for (int i = 0; i < count; ++i)
+      if (weight[static_cast<size_t>(i)] != 0.0) feature[static_cast<size_t>(n++)] = vertex[static_cast<size_t>(i)];
+    // Insertion sort by hand: std::sort over the first n entries of a
+    // three-element array trips GCC 12's -Warray-bounds.
+    for (int i = 1; i < n; ++i)
+      for (int j = i; j > 0 && feature[static_cast<size_t>(j)] < feature[static_cast<size_t>(j - 1)]; --j)
+        std::swap(feature[static_cast<size_t>(j)], feature[static_cast<size_t>(j - 1)]);
+    return feature;
   }
 };
 

@@ -128,16 +128,17 @@ bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vect
   return d.dot(n_forward) < -kInsideCosine && d.dot(n_back) < -kInsideCosine;
 }
 
-// The triangles of `s` that hold every one of `feature` (its first `count`
-// entries, 1 to 3 vertices): a vertex's ring, an edge's two triangles, or the
-// triangle itself; and their unit outward normals at positions `at`.
-// Degenerate triangles are left out. `cone` is cleared first.
+// The triangles of `s` that hold every vertex of `feature` (1 to 3, as
+// SurfacePoint::touched_feature gives them): a vertex's ring, an edge's two
+// triangles, or the triangle itself, ascending; and their unit outward
+// normals at positions `at`. Degenerate triangles are left out. `cone` is
+// cleared first.
 struct FeatureCone {
   std::vector<int> faces;
   std::vector<Eigen::Vector3d> normals;
 };
 template <typename At>
-void feature_cone(const PreparedSurface& s, const std::array<int, 3>& feature, int count, At at, FeatureCone& cone) {
+void feature_cone(const PreparedSurface& s, const std::array<int, 3>& feature, At at, FeatureCone& cone) {
   cone.faces.clear();
   cone.normals.clear();
   const Triangles& tri = s.surface->triangles;
@@ -146,10 +147,7 @@ void feature_cone(const PreparedSurface& s, const std::array<int, 3>& feature, i
   for (int i = around.start[static_cast<size_t>(v)]; i < around.start[static_cast<size_t>(v) + 1]; ++i) {
     const int f = around.faces[static_cast<size_t>(i)];
     bool holds = true;
-    for (int k = 0; k < count; ++k) {
-      const int w = feature[static_cast<size_t>(k)];
-      holds = holds && (tri(f, 0) == w || tri(f, 1) == w || tri(f, 2) == w);
-    }
+    for (int w : feature) holds = holds && (w < 0 || tri(f, 0) == w || tri(f, 1) == w || tri(f, 2) == w);
     if (!holds) continue;
     const Eigen::Vector3d n = face_normal(at(tri(f, 0)), at(tri(f, 1)), at(tri(f, 2)));
     if (n.isZero()) continue;
@@ -314,15 +312,12 @@ ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const P
     std::vector<Eigen::Vector3d> generators_a, generators_b;
   };
   thread_local Scratch scratch;
-  std::array<int, 3> feature = {-1, -1, -1};
-  int count = 0;
-  for (int k = 0; k < exact.count; ++k)
-    if (exact.weight[static_cast<size_t>(k)] > 0.0) feature[static_cast<size_t>(count++)] = exact.vertex[static_cast<size_t>(k)];
-  if (count == 0) return ConeVerdict::undecided;
+  const std::array<int, 3> feature = exact.touched_feature();
+  if (feature[0] < 0) return ConeVerdict::undecided;
+  feature_cone(b, feature, at_b, scratch.cone_b);
+  feature_cone(a, {vertex, -1, -1}, at_a, scratch.cone_a);
   const FeatureCone& cone_b = scratch.cone_b;
   const FeatureCone& cone_a = scratch.cone_a;
-  feature_cone(b, feature, count, at_b, scratch.cone_b);
-  feature_cone(a, {vertex, -1, -1}, 1, at_a, scratch.cone_a);
   if (cone_b.normals.empty() || cone_a.normals.empty()) return ConeVerdict::undecided;
   const Eigen::Vector3d aim = rel.norm() > 0.0 ? Eigen::Vector3d(-rel.normalized()) : Eigen::Vector3d::Zero();
   // At an impact p is within rounding of the feature, and d the side it

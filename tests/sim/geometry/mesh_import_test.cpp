@@ -22,7 +22,6 @@ const TriMesh& unit_box() {
   return box;
 }
 
-
 std::string obj_text(const TriMesh& m) {
   std::ostringstream s;
   for (int v = 0; v < m.num_vertices(); ++v) s << "v " << m.vertices.row(v) << "\n";
