@@ -68,7 +68,7 @@ MemoryEstimate estimate_memory(const SceneDesc& scene, bool render) {
   if (render) {
     const render::RenderSettings settings = to_render_settings(scene.render);
     const double pixels = static_cast<double>(settings.width) * settings.height;
-    // Colour and depth per sample, a resolved copy, and an RGBA8 image per
+    // Colour and depth per sample, the single-sample frame, and an RGBA8 image per
     // encoder thread and per frame queued for them.
     const render::FrameWriterSize writer = render::default_frame_writer_size();
     const double bytes =

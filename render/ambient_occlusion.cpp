@@ -1,8 +1,6 @@
 #include "render/ambient_occlusion.h"
 
 #include <algorithm>
-#include <cmath>
-#include <limits>
 #include <string>
 
 #include "core/error.h"
@@ -54,29 +52,13 @@ AmbientOcclusion::AmbientOcclusion(int frame_width, int frame_height)
       m_occlusion("ambient occlusion", shaders::fullscreen_vertex(), shaders::occlusion_fragment()),
       m_blur("ambient occlusion blur", shaders::fullscreen_vertex(), shaders::box_blur_fragment()) {}
 
-AmbientOcclusion::Region AmbientOcclusion::region_around(const Eigen::Vector3d& center, double half,
-                                                         const Eigen::Matrix4f& view_projection) const {
-  const Region whole{0, 0, m_width, m_height};
-  Eigen::Vector2d lo = Eigen::Vector2d::Constant(std::numeric_limits<double>::infinity()), hi = -lo;
-  for (int corner = 0; corner < 8; ++corner) {
-    const Eigen::Vector3d p =
-        center + half * Eigen::Vector3d(corner & 1 ? 1 : -1, corner & 2 ? 1 : -1, corner & 4 ? 1 : -1);
-    const Eigen::Vector4d clip = view_projection.cast<double>() * Eigen::Vector4d(p.x(), p.y(), p.z(), 1.0);
-    if (!(clip.w() > 1e-9)) return whole;
-    const Eigen::Vector2d ndc = clip.head<2>() / clip.w();
-    lo = lo.cwiseMin(ndc);
-    hi = hi.cwiseMax(ndc);
-  }
-  auto pixel = [](double ndc, int size) {
-    return std::clamp((0.5 * std::clamp(ndc, -2.0, 2.0) + 0.5) * size, 0.0, static_cast<double>(size));
-  };
-  return {std::max(static_cast<int>(std::floor(pixel(lo.x(), m_width))) - 2, 0),
-          std::max(static_cast<int>(std::floor(pixel(lo.y(), m_height))) - 2, 0),
-          std::min(static_cast<int>(std::ceil(pixel(hi.x(), m_width))) + 2, m_width),
-          std::min(static_cast<int>(std::ceil(pixel(hi.y(), m_height))) + 2, m_height)};
+ScreenRect AmbientOcclusion::region_around(const Eigen::Vector3d& center, double half,
+                                           const Eigen::Matrix4f& view_projection) const {
+  const Eigen::Vector3d reach = Eigen::Vector3d::Constant(half);
+  return screen_rect(center - reach, center + reach, view_projection, m_width, m_height, 2);
 }
 
-void AmbientOcclusion::begin_depth(const Region& region) {
+void AmbientOcclusion::begin_depth(const ScreenRect& region) {
   glViewport(0, 0, m_width, m_height);
   glDisable(GL_SCISSOR_TEST);
   glClearColor(1.0f, 1.0f, 1.0f, 1.0f);
@@ -86,8 +68,7 @@ void AmbientOcclusion::begin_depth(const Region& region) {
   }
   glBindFramebuffer(GL_FRAMEBUFFER, m_depth_target.get());
   glClear(GL_DEPTH_BUFFER_BIT);
-  glEnable(GL_SCISSOR_TEST);
-  glScissor(region.x0, region.y0, std::max(region.x1 - region.x0, 0), std::max(region.y1 - region.y0, 0));
+  scissor_to(region);
 }
 
 void AmbientOcclusion::resolve(const Eigen::Matrix4f& projection, float radius) {

@@ -11,6 +11,7 @@
 #include <Eigen/Core>
 
 #include "render/gl_objects.h"
+#include "render/screen_rect.h"
 #include "render/shader_program.h"
 
 namespace recoil::render {
@@ -22,20 +23,15 @@ class AmbientOcclusion {
 
   AmbientOcclusion(int frame_width, int frame_height);
 
-  // Pixels of this pass's size, [x0, x1) by [y0, y1), rows from the bottom.
-  struct Region {
-    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
-  };
-
   // The pixels of this pass where a cube (center, half size in metres) can
   // show, seen through `view_projection` (world to clip, 4 by 4), plus the
   // blur's two pixels; all of them when a corner is behind the eye.
-  Region region_around(const Eigen::Vector3d& center, double half, const Eigen::Matrix4f& view_projection) const;
+  ScreenRect region_around(const Eigen::Vector3d& center, double half, const Eigen::Matrix4f& view_projection) const;
 
   // Binds the depth target, viewport set and depth cleared, for depth-only
   // draws limited to `region`; outside it everything stays open (1). It
   // leaves the scissor test on, and the clear colour white, until resolve().
-  void begin_depth(const Region& region);
+  void begin_depth(const ScreenRect& region);
   // Turns the depth drawn into occlusion, in the region only, and turns the
   // scissor test off again. `projection`:
   // the frame's view to clip (4 by 4, a symmetric perspective); `radius`: how

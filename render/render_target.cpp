@@ -6,6 +6,7 @@
 
 #include "core/error.h"
 #include "render/refused_setting.h"
+#include "render/shaders.h"
 
 namespace recoil::render {
 namespace {
@@ -33,18 +34,39 @@ void storage(GLuint renderbuffer, int samples, GLenum format, int width, int hei
   }
 }
 
+// The colour texture of the meshes' layer, sampled by texel in the lay-over pass.
+void texture_storage(GLuint texture, int samples, int width, int height) {
+  if (samples > 0) {
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, texture);
+    glTexImage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, GL_SRGB8_ALPHA8, width, height, GL_TRUE);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+  } else {
+    glBindTexture(GL_TEXTURE_2D, texture);
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_SRGB8_ALPHA8, width, height, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glBindTexture(GL_TEXTURE_2D, 0);
+  }
+}
+
 }  // namespace
 
 RenderTarget::RenderTarget(int width, int height, int msaa)
     : m_width(width),
       m_height(height),
       m_msaa(msaa),
-      m_draw_color(gl::Renderbuffer::create()),
-      m_draw_depth(gl::Renderbuffer::create()),
-      m_draw(gl::Framebuffer::create()) {
-  GLint max_size = 0, max_samples = 0;
+      m_mesh_color(gl::Texture::create()),
+      m_mesh_depth(gl::Renderbuffer::create()),
+      m_meshes(gl::Framebuffer::create()),
+      m_frame_color(gl::Renderbuffer::create()),
+      m_frame(gl::Framebuffer::create()),
+      m_empty(gl::VertexArray::create()),
+      m_lay_over("lay meshes over frame", shaders::fullscreen_vertex(), shaders::lay_over_fragment(msaa)) {
+  GLint max_size = 0, max_samples = 0, max_color_samples = 0;
   glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
   glGetIntegerv(GL_MAX_SAMPLES, &max_samples);
+  glGetIntegerv(GL_MAX_COLOR_TEXTURE_SAMPLES, &max_color_samples);
+  max_samples = std::min(max_samples, max_color_samples);
   if (width > max_size || height > max_size) {
     throw RefusedSetting("resolution", "render resolution " + std::to_string(width) + "x" + std::to_string(height) +
                     " exceeds the OpenGL driver's limit of " + std::to_string(max_size));
@@ -53,18 +75,20 @@ RenderTarget::RenderTarget(int width, int height, int msaa)
     throw RefusedSetting("msaa", "render msaa " + std::to_string(msaa) + " exceeds the OpenGL driver's limit of " +
                     std::to_string(max_samples) + " samples");
   }
-  storage(m_draw_color.get(), msaa, GL_SRGB8_ALPHA8, width, height);
-  storage(m_draw_depth.get(), msaa, GL_DEPTH_COMPONENT24, width, height);
-  glBindFramebuffer(GL_FRAMEBUFFER, m_draw.get());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_draw_color.get());
-  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_draw_depth.get());
-  check_complete("multisampled colour and depth", width, height, msaa);
+  texture_storage(m_mesh_color.get(), msaa, width, height);
+  storage(m_mesh_depth.get(), msaa, GL_DEPTH_COMPONENT24, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, m_meshes.get());
+  glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, msaa > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D,
+                         m_mesh_color.get(), 0);
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, m_mesh_depth.get());
+  check_complete(msaa > 0 ? "multisampled colour and depth" : "colour and depth", width, height, msaa);
   if (msaa > 0) {
-    glBindRenderbuffer(GL_RENDERBUFFER, m_draw_color.get());
     // A driver may round the count up (llvmpipe offers 4 only): the image
     // would then be --msaa 4's, so the request is refused, not changed.
     GLint samples = 0;
-    glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &samples);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, m_mesh_color.get());
+    glGetTexLevelParameteriv(GL_TEXTURE_2D_MULTISAMPLE, 0, GL_TEXTURE_SAMPLES, &samples);
+    glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
     if (samples != msaa) {
       const char* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
       throw RefusedSetting("msaa", "render msaa " + std::to_string(msaa) + ": this OpenGL driver (" +
@@ -72,32 +96,49 @@ RenderTarget::RenderTarget(int width, int height, int msaa)
                       " samples when asked for " + std::to_string(msaa) + "; use msaa 0" +
                       (samples == 2 || samples == 4 ? " or " + std::to_string(samples) : std::string()));
     }
-    m_resolve_color = gl::Renderbuffer::create();
-    m_resolve = gl::Framebuffer::create();
-    storage(m_resolve_color.get(), 0, GL_SRGB8_ALPHA8, width, height);
-    glBindFramebuffer(GL_FRAMEBUFFER, m_resolve.get());
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_resolve_color.get());
-    check_complete("resolve", width, height, 0);
   }
+  storage(m_frame_color.get(), 0, GL_SRGB8_ALPHA8, width, height);
+  glBindFramebuffer(GL_FRAMEBUFFER, m_frame.get());
+  glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER, m_frame_color.get());
+  check_complete("frame", width, height, 0);
   glBindFramebuffer(GL_FRAMEBUFFER, 0);
 }
 
-void RenderTarget::bind_for_drawing() const {
-  glBindFramebuffer(GL_FRAMEBUFFER, m_draw.get());
+void RenderTarget::bind_frame() const {
+  glBindFramebuffer(GL_FRAMEBUFFER, m_frame.get());
   glViewport(0, 0, m_width, m_height);
 }
 
+void RenderTarget::begin_meshes(const ScreenRect& rect) {
+  glBindFramebuffer(GL_FRAMEBUFFER, m_meshes.get());
+  glViewport(0, 0, m_width, m_height);
+  scissor_to(rect);
+  glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
+  glClearDepth(1.0);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+}
+
+void RenderTarget::lay_meshes_over_frame(const ScreenRect& rect, GLenum unit) {
+  bind_frame();
+  scissor_to(rect);
+  glDisable(GL_DEPTH_TEST);
+  glEnable(GL_BLEND);
+  glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);  // premultiplied colour, linear with GL_FRAMEBUFFER_SRGB
+  glActiveTexture(unit);
+  glBindTexture(m_msaa > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, m_mesh_color.get());
+  m_lay_over.use();
+  glUniform1i(m_lay_over.location("u_layer"), static_cast<GLint>(unit - GL_TEXTURE0));
+  glBindVertexArray(m_empty.get());
+  glDrawArrays(GL_TRIANGLES, 0, 3);
+  glBindVertexArray(0);
+  glActiveTexture(GL_TEXTURE0);
+  glDisable(GL_BLEND);
+  glDisable(GL_SCISSOR_TEST);
+  glEnable(GL_DEPTH_TEST);
+}
+
 void RenderTarget::read(Image& image) {
-  if (m_msaa > 0) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_draw.get());
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, m_resolve.get());
-    // With GL_FRAMEBUFFER_SRGB on (as the renderer leaves it), the samples are
-    // averaged as linear values, so edges do not darken.
-    glBlitFramebuffer(0, 0, m_width, m_height, 0, 0, m_width, m_height, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_resolve.get());
-  } else {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, m_draw.get());
-  }
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, m_frame.get());
   if (image.width != m_width || image.height != m_height) image = Image(m_width, m_height);
   glPixelStorei(GL_PACK_ALIGNMENT, 4);
   glReadPixels(0, 0, m_width, m_height, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());

@@ -19,6 +19,7 @@
 #include "render/mesh_buffers.h"
 #include "render/refused_setting.h"
 #include "render/render_target.h"
+#include "render/screen_rect.h"
 #include "render/shader_program.h"
 #include "render/shaders.h"
 #include "render/shadow_map.h"
@@ -40,6 +41,9 @@ int shadow_map_size(const RenderSettings& s) {
 constexpr GLenum kShadowUnit = GL_TEXTURE0;
 constexpr GLenum kMaterialUnit = GL_TEXTURE1;
 constexpr GLenum kOcclusionUnit = GL_TEXTURE2;
+constexpr GLenum kLayerUnit = GL_TEXTURE3;
+// Pixels the meshes' rectangle grows by: line width, sample positions, rounding.
+constexpr int kMeshRectPad = 2;
 // The occlusion's reach as a share of the scene's bounding radius: creases
 // and the gap under a resting body, not the whole room.
 constexpr double kOcclusionReach = 0.15;
@@ -144,6 +148,11 @@ void set_culling(bool cull) {
 struct Frame {
   Eigen::Vector3d center;  // of the visible meshes' bounding box (metres)
   double radius = 1.0;     // half its diagonal
+  bool has_meshes = false;
+  Bounds meshes;           // that box
+  // Keeps what the drawn ground does not hide: the side of it the eye is on
+  // (n, d: n.p + d >= 0 kept); everything when no ground is drawn.
+  Eigen::Vector4f clip_plane = Eigen::Vector4f(0.0f, 0.0f, 0.0f, 1.0f);
   bool shadows = false;
   bool meshes_changed = false;  // some mesh was uploaded anew
   StudioLights lights;
@@ -182,7 +191,6 @@ struct Renderer::Impl {
   std::array<ShaderProgram, 4> ground_programs;  // the floor's cell; index: shadows + 2 * grid
   std::array<ShaderProgram, 2> bare_ground_programs;  // around the cell, no lookups; index: grid
   ShaderProgram catcher_program;  // the ground over a transparent background
-  ShaderProgram clear_floor_program;  // ... where it can catch no shadow
   ShaderProgram depth_program;
   ShaderProgram wire_program;
   Ground ground;
@@ -204,7 +212,6 @@ struct Renderer::Impl {
                         ground_program(false, true, s.ambient_occlusion), ground_program(true, true, s.ambient_occlusion)},
         bare_ground_programs{ground_program(false, false, false), ground_program(false, true, false)},
         catcher_program("shadow catcher", shaders::ground_vertex(), shaders::shadow_catcher_fragment()),
-        clear_floor_program("clear floor", shaders::ground_vertex(), shaders::flat_fragment()),
         depth_program("depth", shaders::depth_vertex(), shaders::depth_fragment()),
         wire_program("wireframe", shaders::mesh_vertex(), shaders::flat_fragment()) {}
 
@@ -270,6 +277,12 @@ Frame Renderer::Impl::upload(const RenderSettings& settings, const RenderScene& 
   if (has_meshes) {
     frame.center = 0.5 * (scene_bounds.lo + scene_bounds.hi);
     frame.radius = std::max(0.5 * size, 1e-3);
+    frame.meshes = scene_bounds;
+  }
+  frame.has_meshes = has_meshes;
+  if (scene.ground && settings.ground) {
+    const float side = camera.eye.y() >= scene.ground_height ? 1.0f : -1.0f;
+    frame.clip_plane = Eigen::Vector4f(0.0f, side, 0.0f, -side * scene.ground_height);
   }
   frame.shadows = settings.shadows && has_meshes;
   frame.lights = studio_lights(camera);
@@ -364,6 +377,7 @@ void Renderer::Impl::set_lighting(ShaderProgram& p, const Frame& frame, const Ca
   set(p, "u_rim_color", lights.rim.color);
   set(p, "u_sky_ambient", lights.sky_ambient);
   set(p, "u_ground_ambient", lights.ground_ambient);
+  glUniform4fv(p.location("u_clip_plane"), 1, frame.clip_plane.data());
 }
 
 void Renderer::Impl::draw_mesh(const RenderSettings& settings, const RenderMesh& mesh, const MeshBuffers& buffers,
@@ -476,14 +490,8 @@ void Renderer::Impl::draw_shadow_catcher(const Frame& frame, const GroundLayout&
   set(p, "u_shadow_strength", key + other > 0.0f ? key / (key + other) : 0.0f);
   glUniform2f(p.location("u_center"), static_cast<float>(g.center_x), static_cast<float>(g.center_z));
   glUniform2f(p.location("u_fade"), static_cast<float>(g.fade_start), static_cast<float>(g.fade_end));
-  // Like the floor it stands for, it replaces what is behind it (the
-  // transparent clear colour, or a body's part below the ground) and writes
-  // depth; around the cell that replacement is all it does.
+  // Around the cell it would only draw the transparent clear colour again.
   ground.draw_cell(g);
-  clear_floor_program.use();
-  set(clear_floor_program, "u_view_projection", frame.view_projection);
-  glUniform4f(clear_floor_program.location("u_color"), 0.0f, 0.0f, 0.0f, 0.0f);
-  ground.draw_surround(g);
 }
 
 void Renderer::Impl::draw_transparent(const RenderSettings& settings, const RenderScene& scene,
@@ -530,42 +538,52 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   glDepthMask(GL_TRUE);
   if (frame.shadows) shadow_pass(scene, frame);
   if (frame.occlusion) occlusion_pass(settings, scene, frame);
-
-  target.bind_for_drawing();
   glEnable(GL_FRAMEBUFFER_SRGB);  // linear in the shaders, sRGB bytes in memory
+  shadow_map.bind_texture(kShadowUnit);
+  if (occlusion) occlusion->bind_texture(kOcclusionUnit);
+
+  // The frame layer: the background and the floor, its rim fading into the
+  // background colour. The floor hides nothing here: what lies beyond it is
+  // cut from the meshes by the clip plane instead.
+  target.bind_frame();
   if (settings.transparent_background) {
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
   } else {
     glClearColor(frame.background[0], frame.background[1], frame.background[2], 1.0f);
   }
-  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-  shadow_map.bind_texture(kShadowUnit);
-  if (occlusion) occlusion->bind_texture(kOcclusionUnit);
-  const MeshPrograms programs{&mesh_programs[frame.shadows ? 1 : 0], &mesh_programs[frame.shadows ? 3 : 2]};
-  set_lighting(*programs.plain, frame, camera);
-  if (std::any_of(meshes.begin(), meshes.end(), [](const MeshBuffers& m) { return !m.groups().empty(); }))
-    set_lighting(*programs.textured, frame, camera);
-  if (settings.wireframe) {
-    wire_program.use();
-    set(wire_program, "u_view_projection", frame.view_projection);
-  }
-
-  // Opaque meshes first, with no blending; closed ones without their back
-  // faces, which llvmpipe would otherwise set up and depth-test for nothing.
-  glCullFace(GL_BACK);
-  for (size_t i = 0; i < meshes.size(); ++i) {
-    if (scene.meshes[i].opacity < kOpaque) continue;
-    set_culling(meshes[i].closed());
-    draw_mesh(settings, scene.meshes[i], meshes[i], programs);
-  }
-  set_culling(false);
-
-  // The floor, its rim fading into the background colour. It is drawn after
-  // the opaque meshes so that early depth testing skips the pixels they cover;
-  // it does not blend, so anything below the floor stays hidden even where
-  // the floor has faded out.
+  glClear(GL_COLOR_BUFFER_BIT);
   if (scene.ground && settings.ground) draw_ground(settings, scene, frame);
-  draw_transparent(settings, scene, camera, programs);
+
+  // The meshes' layer, only where they can show, then laid over the frame.
+  const ScreenRect rect = frame.has_meshes ? screen_rect(frame.meshes.lo, frame.meshes.hi, frame.view_projection,
+                                                         settings.width, settings.height, kMeshRectPad)
+                                           : ScreenRect{};
+  if (!rect.empty()) {
+    target.begin_meshes(rect);
+    glEnable(GL_DEPTH_TEST);
+    glEnable(GL_CLIP_DISTANCE0);
+    const MeshPrograms programs{&mesh_programs[frame.shadows ? 1 : 0], &mesh_programs[frame.shadows ? 3 : 2]};
+    set_lighting(*programs.plain, frame, camera);
+    if (std::any_of(meshes.begin(), meshes.end(), [](const MeshBuffers& m) { return !m.groups().empty(); }))
+      set_lighting(*programs.textured, frame, camera);
+    if (settings.wireframe) {
+      wire_program.use();
+      set(wire_program, "u_view_projection", frame.view_projection);
+      glUniform4fv(wire_program.location("u_clip_plane"), 1, frame.clip_plane.data());
+    }
+    // Opaque meshes first, with no blending; closed ones without their back
+    // faces, which llvmpipe would otherwise set up and depth-test for nothing.
+    glCullFace(GL_BACK);
+    for (size_t i = 0; i < meshes.size(); ++i) {
+      if (scene.meshes[i].opacity < kOpaque) continue;
+      set_culling(meshes[i].closed());
+      draw_mesh(settings, scene.meshes[i], meshes[i], programs);
+    }
+    set_culling(false);
+    draw_transparent(settings, scene, camera, programs);
+    glDisable(GL_CLIP_DISTANCE0);
+    target.lay_meshes_over_frame(rect, kLayerUnit);
+  }
 
   target.read(image);
   if (settings.transparent_background) unpremultiply_srgb(image);

@@ -97,6 +97,7 @@ layout(location = 3) in vec2 a_uv;
 uniform mat4 u_view_projection;
 uniform mat4 u_light_matrix;     // world to shadow-map [0,1]^3
 uniform float u_normal_offset;   // metres; pushes lookups off the surface against acne
+uniform vec4 u_clip_plane;       // (n, d): what has n.p + d < 0 is hidden by the ground, and cut away
 out vec3 v_world;
 out vec3 v_normal;
 out vec4 v_shadow;
@@ -108,6 +109,7 @@ void main() {
   v_color = a_color;
   v_uv = a_uv;
   v_shadow = u_light_matrix * vec4(a_position + u_normal_offset * a_normal, 1.0);
+  gl_ClipDistance[0] = dot(u_clip_plane, vec4(a_position, 1.0));
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 }
 )";
@@ -298,6 +300,22 @@ void main() {
                          texture(u_source, uv + vec2(1.5, -0.5) * u_texel).r +
                          texture(u_source, uv + vec2(-0.5, 1.5) * u_texel).r +
                          texture(u_source, uv + vec2(1.5, 1.5) * u_texel).r));
+}
+)";
+}
+
+std::string lay_over_fragment(int samples) {
+  const std::string layer = samples > 0 ? "uniform sampler2DMS u_layer;\nconst int kSamples = " +
+                                              std::to_string(samples) + ";\n"
+                                        : "uniform sampler2D u_layer;\nconst int kSamples = 1;\n";
+  return std::string(kHeader) + layer + R"(
+out vec4 o_color;
+// The mean of this pixel's samples, each decoded from sRGB to linear on fetch.
+void main() {
+  ivec2 pixel = ivec2(gl_FragCoord.xy);
+  vec4 sum = vec4(0.0);
+  for (int i = 0; i < kSamples; ++i) sum += texelFetch(u_layer, pixel, i);
+  o_color = sum / float(kSamples);
 }
 )";
 }

@@ -27,6 +27,9 @@ std::string depth_fragment();
 std::string fullscreen_vertex();
 std::string occlusion_fragment();
 std::string box_blur_fragment();
+// The meshes' layer laid over the frame (render_target.h): the mean of a
+// pixel's `samples` (0: a single-sample texture), premultiplied.
+std::string lay_over_fragment(int samples);
 // Flat colour, for the wireframe overlay.
 std::string flat_fragment();
 
