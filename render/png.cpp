@@ -40,8 +40,8 @@ void flush_nothing(png_structp) {}
 
 // Encodes with setjmp-based error handling; nothing with a destructor lives in
 // this frame between setjmp and the libpng calls.
-bool encode_raw(const Image& image, const PngOptions& options, std::vector<std::uint8_t>* out, PngError* error,
-                std::vector<png_bytep>* rows) {
+bool encode_raw(const Image& image, bool opaque, const PngOptions& options, std::vector<std::uint8_t>* out,
+                PngError* error, std::vector<png_bytep>* rows) {
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, error, on_png_error, on_png_warning);
   if (!png) return false;
   png_infop info = png_create_info_struct(png);
@@ -50,13 +50,19 @@ bool encode_raw(const Image& image, const PngOptions& options, std::vector<std::
     return false;
   }
   png_set_write_fn(png, out, append_bytes, flush_nothing);
-  png_set_IHDR(png, info, image.width, image.height, 8, PNG_COLOR_TYPE_RGBA, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_set_IHDR(png, info, image.width, image.height, 8, opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_set_compression_level(png, options.level);
   if (options.fast_filter) png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB);
   png_set_rows(png, info, rows->data());
-  png_write_png(png, info, PNG_TRANSFORM_IDENTITY, nullptr);
+  png_write_png(png, info, opaque ? PNG_TRANSFORM_STRIP_FILLER_AFTER : PNG_TRANSFORM_IDENTITY, nullptr);
   png_destroy_write_struct(&png, &info);
+  return true;
+}
+
+bool every_pixel_opaque(const Image& image) {
+  for (std::size_t i = 3; i < image.rgba.size(); i += 4)
+    if (image.rgba[i] != 255) return false;
   return true;
 }
 
@@ -69,7 +75,7 @@ std::vector<std::uint8_t> encode_png(const Image& image, const PngOptions& optio
   std::vector<std::uint8_t> out;
   out.reserve(image.rgba.size() / 4);
   PngError error;
-  if (!encode_raw(image, options, &out, &error, &rows))
+  if (!encode_raw(image, every_pixel_opaque(image), options, &out, &error, &rows))
     throw Error(ErrorKind::internal, std::string("PNG encoding failed: ") + error.message);
   return out;
 }

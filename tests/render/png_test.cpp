@@ -29,6 +29,27 @@ TEST(Png, RoundTripIsLosslessAtEveryLevel) {
   EXPECT_EQ(files, 8);
 }
 
+// The colour type byte of a PNG's header chunk (2: RGB, 6: RGBA).
+int colour_type(const std::vector<std::uint8_t>& png) { return png.at(25); }
+
+TEST(Png, OpaqueImagesAreWrittenAsRgbAndOthersKeepTheirAlpha) {
+  Image image(19, 11);
+  for (size_t i = 0; i < image.rgba.size(); ++i) image.rgba[i] = i % 4 == 3 ? 255 : static_cast<std::uint8_t>(i * 31);
+  const std::vector<std::uint8_t> opaque = encode_png(image);
+  EXPECT_EQ(colour_type(opaque), 2);
+  image.pixel(18, 10)[3] = 254;
+  const std::vector<std::uint8_t> translucent = encode_png(image);
+  EXPECT_EQ(colour_type(translucent), 6);
+  EXPECT_LT(opaque.size(), translucent.size());
+  // Both read back as the RGBA pixels they were made from.
+  const auto dir = recoil::test::scratch_dir("png_colour_type");
+  for (const std::uint8_t alpha : {255, 254}) {
+    image.pixel(18, 10)[3] = alpha;
+    write_png(dir / "frame.png", image);
+    EXPECT_EQ(read_png(dir / "frame.png").rgba, image.rgba) << "alpha " << int(alpha);
+  }
+}
+
 TEST(Png, RejectsNonPngAndTruncatedFiles) {
   const auto dir = recoil::test::scratch_dir("png_bad");
   std::ofstream(dir / "text.png") << "hello";
