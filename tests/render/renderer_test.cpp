@@ -326,6 +326,39 @@ TEST(Renderer, FloorFollowsGroundHeightAndToggles) {
   EXPECT_NE(at(base, 0, 63), (std::array<int, 4>{0x1d, 0x21, 0x27, 255}));
 }
 
+TEST(Renderer, TheFloorHidesWhatIsOnItsFarSideFromAboveAndFromBelow) {
+  // Red-dominant pixels: the box showing (the floor and background are grey-blue).
+  auto red_pixels = [](const Image& image) {
+    int count = 0;
+    for (int y = 0; y < image.height; ++y)
+      for (int x = 0; x < image.width; ++x) {
+        const auto p = at(image, x, y);
+        count += p[0] > p[1] + 40 && p[0] > p[2] + 40;
+      }
+    return count;
+  };
+  const Rgb red = {0.9f, 0.1f, 0.1f};
+  for (int msaa : {0, 4}) {
+    for (const double eye_height : {4.0, -4.0}) {
+      // The box lies wholly on the side of the floor away from the eye.
+      const float side = eye_height > 0.0 ? -1.0f : 1.0f;
+      RenderScene scene;
+      scene.meshes = {test::make_box({0.3f, 0.7f * side, 0.0f}, {1.0f, 1.0f, 1.0f}, red)};
+      Camera camera;
+      camera.eye = {0.5, eye_height, 3.0};
+      camera.target = {0.0, 0.0, 0.0};
+      const RenderSettings settings = small(msaa, true);
+      const int hidden = red_pixels(Renderer(settings).render(scene, camera));
+      scene.ground = false;
+      const int shown = red_pixels(Renderer(settings).render(scene, camera));
+      std::cout << "msaa " << msaa << ", eye at height " << eye_height << ": " << hidden << " red pixels with the floor, "
+                << shown << " without\n";
+      EXPECT_EQ(hidden, 0);
+      EXPECT_GT(shown, 200);
+    }
+  }
+}
+
 TEST(Renderer, TheShadowMapIsRedrawnOnlyWhenWhatItSeesChanged) {
   const RenderSettings settings = small(4, true);
   Renderer renderer(settings);
