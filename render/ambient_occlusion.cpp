@@ -52,10 +52,9 @@ AmbientOcclusion::AmbientOcclusion(int frame_width, int frame_height)
       m_occlusion("ambient occlusion", shaders::fullscreen_vertex(), shaders::occlusion_fragment()),
       m_blur("ambient occlusion blur", shaders::fullscreen_vertex(), shaders::box_blur_fragment()) {}
 
-ScreenRect AmbientOcclusion::region_around(const Eigen::Vector3d& center, double half,
+ScreenRect AmbientOcclusion::region_around(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
                                            const Eigen::Matrix4f& view_projection) const {
-  const Eigen::Vector3d reach = Eigen::Vector3d::Constant(half);
-  return screen_rect(center - reach, center + reach, view_projection, m_width, m_height, 2);
+  return screen_rect(lo, hi, view_projection, m_width, m_height, 2);
 }
 
 void AmbientOcclusion::begin_depth(const ScreenRect& region) {

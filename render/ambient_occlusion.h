@@ -23,10 +23,11 @@ class AmbientOcclusion {
 
   AmbientOcclusion(int frame_width, int frame_height);
 
-  // The pixels of this pass where a cube (center, half size in metres) can
-  // show, seen through `view_projection` (world to clip, 4 by 4), plus the
-  // blur's two pixels; all of them when a corner is behind the eye.
-  ScreenRect region_around(const Eigen::Vector3d& center, double half, const Eigen::Matrix4f& view_projection) const;
+  // The pixels of this pass where the box [lo, hi] (metres) can show, seen
+  // through `view_projection` (world to clip, 4 by 4), plus the blur's two
+  // pixels; all of them when a corner is behind the eye.
+  ScreenRect region_around(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                           const Eigen::Matrix4f& view_projection) const;
 
   // Binds the depth target, viewport set and depth cleared, for depth-only
   // draws limited to `region`; outside it everything stays open (1). It

@@ -46,9 +46,8 @@ std::optional<FloorRect> shadow_reach(double height, const Eigen::Vector3d& cent
   return FloorRect{x - half, x + half, z - half, z + half};
 }
 
-FloorRect near_reach(const Eigen::Vector3d& center, double radius, double reach) {
-  const double half = radius + reach;
-  return {center.x() - half, center.x() + half, center.z() - half, center.z() + half};
+FloorRect near_reach(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double reach) {
+  return {lo.x() - reach, hi.x() + reach, lo.z() - reach, hi.z() + reach};
 }
 
 void set_cell(GroundLayout& layout, const FloorRect& cell) {

@@ -38,8 +38,8 @@ GroundLayout ground_layout(double center_x, double center_z, double radius, doub
 // the whole floor.
 std::optional<FloorRect> shadow_reach(double height, const Eigen::Vector3d& center, double radius,
                                       const Eigen::Vector3d& to_light, double reach);
-// The floor within `reach` metres of the sphere (center, radius), seen from above.
-FloorRect near_reach(const Eigen::Vector3d& center, double radius, double reach);
+// The floor within `reach` metres of the box [lo, hi], seen from above.
+FloorRect near_reach(const Eigen::Vector3d& lo, const Eigen::Vector3d& hi, double reach);
 // Sets the middle cell to `cell` clamped into the square.
 void set_cell(GroundLayout& layout, const FloorRect& cell);
 

@@ -340,7 +340,8 @@ void Renderer::Impl::draw_depth(const RenderScene& scene, Accept accept) {
 void Renderer::Impl::occlusion_pass(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
   // What the lighting passes see opaque: the opaque meshes and the floor.
   // A point's taps reach twice the reach from the meshes' sphere at most.
-  occlusion->begin_depth(occlusion->region_around(frame.center, frame.radius + 2.0 * occlusion_reach(frame),
+  const Eigen::Vector3d taps_reach = Eigen::Vector3d::Constant(2.0 * occlusion_reach(frame));
+  occlusion->begin_depth(occlusion->region_around(frame.meshes.lo - taps_reach, frame.meshes.hi + taps_reach,
                                                   frame.view_projection));
   depth_program.use();
   set(depth_program, "u_view_projection", frame.view_projection);
@@ -433,7 +434,7 @@ void Renderer::Impl::draw_ground(const RenderSettings& settings, const RenderSce
   const bool lookups = frame.shadows || occluded;
   if (lookups) {
     std::optional<FloorRect> cell =
-        occluded ? std::optional(near_reach(frame.center, frame.radius, occlusion_reach(frame))) : std::nullopt;
+        occluded ? std::optional(near_reach(frame.meshes.lo, frame.meshes.hi, occlusion_reach(frame))) : std::nullopt;
     bool whole = false;
     if (frame.shadows) {
       const std::optional<FloorRect> shadow = shadow_reach(g.height, frame.center, frame.radius,

@@ -47,12 +47,14 @@ TEST(GroundCell, AGrazingLightReachesTheWholeFloor) {
   EXPECT_FALSE(shadow_reach(0.0, Eigen::Vector3d(0.0, 1.0, 0.0), 1.0, Eigen::Vector3d(0.0, -1.0, 0.0), 0.0));
 }
 
-TEST(GroundCell, TheNearReachHoldsTheSphereSeenFromAboveAndTheCellStaysOnTheFloor) {
+TEST(GroundCell, TheNearReachHoldsTheBoxSeenFromAboveAndTheCellStaysOnTheFloor) {
   const Eigen::Vector3d center(1.0, 0.5, -2.0);
-  const FloorRect near = near_reach(center, 0.5, 0.1);
+  const Eigen::Vector3d half(0.5, 0.5, 0.3);
+  const FloorRect near = near_reach(center - half, center + half, 0.1);
   EXPECT_TRUE(holds(near, 1.0 + 0.5, -2.0, 0.1 - 1e-12));
-  EXPECT_TRUE(holds(near, 1.0, -2.0 - 0.5, 0.1 - 1e-12));
+  EXPECT_TRUE(holds(near, 1.0, -2.0 - 0.3, 0.1 - 1e-12));
   EXPECT_FALSE(holds(near, 1.0 + 0.61, -2.0, 0.0));
+  EXPECT_FALSE(holds(near, 1.0, -2.0 + 0.41, 0.0));
 
   GroundLayout layout = ground_layout(center.x(), center.z(), 0.5, 0.0);
   const FloorRect whole = layout.cell;
