@@ -18,7 +18,7 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
       ->check(CLI::IsMember({0, 2, 4}))->group(group)->capture_default_str();
   command.add_flag("--no-shadows", options.no_shadows, "Skip the key light's shadow (faster)")->group(group);
   command.add_flag("--ao", options.ambient_occlusion,
-                   "Ambient occlusion: creases, and the floor where a body meets it, darken (a fifth to a "
+                   "Ambient occlusion: creases, and the floor where a body meets it, darken (a quarter to a "
                    "third more render time)")
       ->group(group);
   command.add_flag("--no-ground", options.no_ground,
