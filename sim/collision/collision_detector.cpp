@@ -12,6 +12,7 @@
 #include "sim/collision/local_deformation.h"
 #include "sim/collision/narrow_phase.h"
 #include "sim/collision/rest_clearance.h"
+#include "sim/collision/search_memo.h"
 
 namespace recoil::sim {
 
@@ -30,6 +31,7 @@ struct CollisionDetector::Impl {
   };
   EmbreeDevice device;
   std::vector<SurfaceScenes> scenes;
+  SearchMemo memo;
 };
 
 namespace {
@@ -190,6 +192,10 @@ CollisionDetector::~CollisionDetector() = default;
 std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<CollisionSurface>& surfaces,
                                                         const std::vector<CollisionPlane>& planes) {
   m_stats = {};
+  if (const std::vector<ContactCandidate>* earlier = m_impl->memo.find(surfaces, planes)) {
+    m_stats.reused = true;
+    return *earlier;
+  }
   const double margin = m_settings.margin;
   const int threads = m_settings.num_threads;
   // Refit (same triangles as last call) or rebuild each surface's scenes.
@@ -327,6 +333,7 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
           if (auto c = test_vertex_plane(a, v, planes[k], static_cast<int>(k), margin)) out.push_back(std::move(*c));
   }
   finalize_candidates(out, surfaces);
+  m_impl->memo.remember(surfaces, planes, out);
   return out;
 }
 

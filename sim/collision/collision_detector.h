@@ -15,7 +15,8 @@
 //   primitive they may contact (rest_clearance.h);
 // - vertex-plane: analytic.
 // The rule for what becomes a candidate is in narrow_phase.h; the brute-force
-// oracle (brute_force.h) applies the same rule to all pairs.
+// oracle (brute_force.h) applies the same rule to all pairs. An input equal
+// to one of the last two calls' gets their answer again (search_memo.h).
 //
 // The continuous check (time of impact) is solved exactly in double for every
 // pair the distance query offers, with both primitives moving: the query
@@ -34,6 +35,7 @@ struct CollisionStats {
   long long edge_edge_pairs = 0;        // pairs offered by rtcCollide
   long long self_pairs = 0;             // of both, those within one surface
   int rebuilt_surfaces = 0;             // scenes built from scratch this call (others refitted)
+  bool reused = false;                  // the input was one of the last two calls': their answer, no query run
 };
 
 class CollisionDetector {

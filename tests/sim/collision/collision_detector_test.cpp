@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <iostream>
 #include <memory>
 
@@ -136,6 +137,43 @@ TEST(CollisionDetector, SameOutputRunAfterRunAndAtAnyThreadCount) {
     CollisionDetector many({0.006, threads});
     testing::expect_same_candidates(many.detect(scene.surfaces, scene.planes), reference, 0.0);
   }
+}
+
+TEST(CollisionDetector, AnInputOfEitherOfTheLastTwoCallsIsAnsweredAgainWithoutASearch) {
+  const RandomScene a = random_scene(11);
+  RandomScene b = a, c = a;
+  for (RandomScene* next : {&b, &c}) {
+    for (CollisionSurface& s : next->surfaces) {
+      const Points step = s.x1 - s.x0;
+      s.x0 = s.x1;
+      s.x1 += step;
+    }
+    if (next == &b) c = b;
+  }
+  CollisionDetector detector({0.004, 1});
+  // Whether the call ran no query, and its answer is what a fresh detector gives.
+  auto reused = [&](const RandomScene& scene) {
+    const auto answer = detector.detect(scene.surfaces, scene.planes);
+    const bool was_reused = detector.last_stats().reused;
+    CollisionDetector fresh({0.004, 1});
+    testing::expect_same_candidates(answer, fresh.detect(scene.surfaces, scene.planes), 0.0);
+    return was_reused;
+  };
+  EXPECT_FALSE(reused(a));
+  EXPECT_FALSE(reused(b));
+  EXPECT_TRUE(reused(a));
+  EXPECT_TRUE(reused(b));
+  EXPECT_EQ(detector.last_stats().vertex_triangle_pairs + detector.last_stats().edge_edge_pairs, 0);
+  EXPECT_FALSE(reused(c));  // takes the place of the older, a
+  EXPECT_FALSE(reused(a));
+  // Any difference in the input is a new search: one coordinate by one ulp, a plane.
+  RandomScene nudged = a;
+  nudged.surfaces[1].x1(3, 2) = std::nextafter(nudged.surfaces[1].x1(3, 2), 1.0);
+  EXPECT_FALSE(reused(nudged));
+  EXPECT_TRUE(reused(a));
+  RandomScene tilted = a;
+  tilted.planes[0].normal.x() = 1e-9;
+  EXPECT_FALSE(reused(tilted));
 }
 
 TEST(CollisionDetector, FarApartSurfacesAreCulledUnlessTheyMoveThrough) {
