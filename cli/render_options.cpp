@@ -100,6 +100,7 @@ render::RenderSettings to_render_settings(const RenderOptions& options) {
 render::PngOptions to_png_options(const RenderOptions& options) {
   render::PngOptions png;
   png.level = options.png_level;
+  png.alpha = options.background == "transparent";  // frames over a colour are opaque
   return png;
 }
 

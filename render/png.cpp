@@ -60,12 +60,6 @@ bool encode_raw(const Image& image, bool opaque, const PngOptions& options, std:
   return true;
 }
 
-bool every_pixel_opaque(const Image& image) {
-  for (std::size_t i = 3; i < image.rgba.size(); i += 4)
-    if (image.rgba[i] != 255) return false;
-  return true;
-}
-
 }  // namespace
 
 std::vector<std::uint8_t> encode_png(const Image& image, const PngOptions& options) {
@@ -75,7 +69,7 @@ std::vector<std::uint8_t> encode_png(const Image& image, const PngOptions& optio
   std::vector<std::uint8_t> out;
   out.reserve(image.rgba.size() / 4);
   PngError error;
-  if (!encode_raw(image, every_pixel_opaque(image), options, &out, &error, &rows))
+  if (!encode_raw(image, !options.alpha, options, &out, &error, &rows))
     throw Error(ErrorKind::internal, std::string("PNG encoding failed: ") + error.message);
   return out;
 }

@@ -99,6 +99,7 @@ void main() { o_color = vec4(vec3(0.8, 0.6, 0.4) * (0.2 + 0.8 * max(dot(normaliz
     glReadPixels(0, 0, kWidth, kHeight, GL_RGBA, GL_UNSIGNED_BYTE, image.rgba.data());
     render::PngOptions png;
     png.level = 1;
+    png.alpha = false;  // opaque, as recoil writes frames over a background colour
     volatile size_t bytes = render::encode_png(image, png).size();
     (void)bytes;
   }
