@@ -281,8 +281,13 @@ Frame Renderer::Impl::upload(const RenderSettings& settings, const RenderScene& 
   }
   frame.has_meshes = has_meshes;
   if (scene.ground && settings.ground) {
-    const float side = camera.eye.y() >= scene.ground_height ? 1.0f : -1.0f;
-    frame.clip_plane = Eigen::Vector4f(0.0f, side, 0.0f, -side * scene.ground_height);
+    // What lies in the floor's plane rests on it, so it belongs to the upper
+    // side: seen from below, the floor hides it (a hair's breadth of slack).
+    const double h = scene.ground_height;
+    const bool above = camera.eye.y() >= h;
+    const double slack = above ? 0.0 : 1e-5 * std::max(frame.radius, std::abs(h));
+    frame.clip_plane = above ? Eigen::Vector4f(0.0f, 1.0f, 0.0f, static_cast<float>(-h))
+                             : Eigen::Vector4f(0.0f, -1.0f, 0.0f, static_cast<float>(h - slack));
   }
   frame.shadows = settings.shadows && has_meshes;
   frame.lights = studio_lights(camera);

@@ -24,7 +24,9 @@ class SearchMemo {
  private:
   struct Entry {
     bool filled = false;
-    std::vector<CollisionSurface> surfaces;  // copies; `rest` is compared by address, as the detector keys it
+    // Copies; `rest` is compared by address, as the detector's rest
+    // clearance is keyed: a rest shape must not change in place.
+    std::vector<CollisionSurface> surfaces;
     std::vector<CollisionPlane> planes;
     std::vector<ContactCandidate> candidates;
   };

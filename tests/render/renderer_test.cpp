@@ -339,11 +339,11 @@ TEST(Renderer, TheFloorHidesWhatIsOnItsFarSideFromAboveAndFromBelow) {
   };
   const Rgb red = {0.9f, 0.1f, 0.1f};
   for (int msaa : {0, 4}) {
-    for (const double eye_height : {4.0, -4.0}) {
-      // The box lies wholly on the side of the floor away from the eye.
-      const float side = eye_height > 0.0 ? -1.0f : 1.0f;
+    // The unit box wholly on the side of the floor away from the eye, or
+    // resting on it (its bottom face in the floor's plane) seen from below.
+    for (const auto& [eye_height, box_height] : {std::pair{4.0f, -0.7f}, {-4.0f, 0.7f}, {-4.0f, 0.5f}}) {
       RenderScene scene;
-      scene.meshes = {test::make_box({0.3f, 0.7f * side, 0.0f}, {1.0f, 1.0f, 1.0f}, red)};
+      scene.meshes = {test::make_box({0.3f, box_height, 0.0f}, {1.0f, 1.0f, 1.0f}, red)};
       Camera camera;
       camera.eye = {0.5, eye_height, 3.0};
       camera.target = {0.0, 0.0, 0.0};
@@ -351,8 +351,8 @@ TEST(Renderer, TheFloorHidesWhatIsOnItsFarSideFromAboveAndFromBelow) {
       const int hidden = red_pixels(Renderer(settings).render(scene, camera));
       scene.ground = false;
       const int shown = red_pixels(Renderer(settings).render(scene, camera));
-      std::cout << "msaa " << msaa << ", eye at height " << eye_height << ": " << hidden << " red pixels with the floor, "
-                << shown << " without\n";
+      std::cout << "msaa " << msaa << ", eye at height " << eye_height << ", box at " << box_height << ": " << hidden
+                << " red pixels with the floor, " << shown << " without\n";
       EXPECT_EQ(hidden, 0);
       EXPECT_GT(shown, 200);
     }
