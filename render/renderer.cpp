@@ -344,7 +344,7 @@ void Renderer::Impl::draw_depth(const RenderScene& scene, Accept accept) {
 
 void Renderer::Impl::occlusion_pass(const RenderSettings& settings, const RenderScene& scene, const Frame& frame) {
   // What the lighting passes see opaque: the opaque meshes and the floor.
-  // A point's taps reach twice the reach from the meshes' sphere at most.
+  // A point's taps reach twice the reach from the meshes' box at most.
   const Eigen::Vector3d taps_reach = Eigen::Vector3d::Constant(2.0 * occlusion_reach(frame));
   occlusion->begin_depth(occlusion->region_around(frame.meshes.lo - taps_reach, frame.meshes.hi + taps_reach,
                                                   frame.view_projection));
