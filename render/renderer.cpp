@@ -4,7 +4,6 @@
 #include <array>
 #include <cmath>
 #include <cstdio>
-#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +12,7 @@
 
 #include "core/error.h"
 #include "render/ambient_occlusion.h"
+#include "render/bounds.h"
 #include "render/context.h"
 #include "render/gl.h"
 #include "render/ground.h"
@@ -53,35 +53,6 @@ constexpr double kNormalOffsetTexels = 1.5;
 // normal offset, the taps' 0.75 and the 2x2 comparison's 1, rounded up.
 constexpr double kShadowReachTexels = 4.0;
 constexpr float kOpaque = 0.999f;  // opacity at or above this draws in the opaque pass
-
-// Axis-aligned bounds of a mesh's positions (#V*3); empty when lo > hi.
-struct Bounds {
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity());
-  Eigen::Vector3d hi = Eigen::Vector3d::Constant(-std::numeric_limits<double>::infinity());
-  bool empty() const { return lo.x() > hi.x(); }
-  void add(const Bounds& other) {
-    lo = lo.cwiseMin(other.lo);
-    hi = hi.cwiseMax(other.hi);
-  }
-};
-
-Bounds bounds_of(const std::vector<float>& positions) {
-  float lo[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
-                 std::numeric_limits<float>::infinity()};
-  float hi[3] = {-lo[0], -lo[1], -lo[2]};
-  for (size_t i = 0; i + 2 < positions.size(); i += 3) {
-    for (int k = 0; k < 3; ++k) {
-      lo[k] = std::min(lo[k], positions[i + static_cast<size_t>(k)]);
-      hi[k] = std::max(hi[k], positions[i + static_cast<size_t>(k)]);
-    }
-  }
-  Bounds b;
-  if (positions.size() >= 3) {
-    b.lo = Eigen::Vector3d(lo[0], lo[1], lo[2]);
-    b.hi = Eigen::Vector3d(hi[0], hi[1], hi[2]);
-  }
-  return b;
-}
 
 void validate(const Camera& c) {
   if (!c.eye.allFinite() || !c.target.allFinite() || !c.up.allFinite() || (c.eye - c.target).norm() < 1e-9) {
@@ -148,8 +119,7 @@ void set_culling(bool cull) {
 struct Frame {
   Eigen::Vector3d center;  // of the visible meshes' bounding box (metres)
   double radius = 1.0;     // half its diagonal
-  bool has_meshes = false;
-  Bounds meshes;           // that box
+  Bounds meshes;           // that box; empty when no mesh is visible
   // Keeps what the drawn ground does not hide: the side of it the eye is on
   // (n, d: n.p + d >= 0 kept); everything when no ground is drawn.
   Eigen::Vector4f clip_plane = Eigen::Vector4f(0.0f, 0.0f, 0.0f, 1.0f);
@@ -279,7 +249,6 @@ Frame Renderer::Impl::upload(const RenderSettings& settings, const RenderScene& 
     frame.radius = std::max(0.5 * size, 1e-3);
     frame.meshes = scene_bounds;
   }
-  frame.has_meshes = has_meshes;
   if (scene.ground && settings.ground) {
     // What lies in the floor's plane rests on it, so it belongs to the upper
     // side: seen from below, the floor hides it (a hair's breadth of slack).
@@ -561,9 +530,9 @@ void Renderer::Impl::draw(const RenderSettings& settings, const RenderScene& sce
   if (scene.ground && settings.ground) draw_ground(settings, scene, frame);
 
   // The meshes' layer, only where they can show, then laid over the frame.
-  const ScreenRect rect = frame.has_meshes ? screen_rect(frame.meshes.lo, frame.meshes.hi, frame.view_projection,
-                                                         settings.width, settings.height, kMeshRectPad)
-                                           : ScreenRect{};
+  const ScreenRect rect = frame.meshes.empty() ? ScreenRect{}
+                                               : screen_rect(frame.meshes.lo, frame.meshes.hi, frame.view_projection,
+                                                             settings.width, settings.height, kMeshRectPad);
   if (!rect.empty()) {
     target.begin_meshes(rect);
     glEnable(GL_DEPTH_TEST);

@@ -64,29 +64,6 @@ TEST(TurntableCommand, TransparentBackgroundAndColour) {
   EXPECT_GT(centre[0], centre[1] + 40);
 }
 
-// The colour type byte of a PNG file's header (2: RGB, 6: RGBA).
-int png_colour_type(const fs::path& file) { return static_cast<unsigned char>(file_bytes(file).at(25)); }
-
-TEST(RunCommand, FramesOverATransparentBackgroundKeepTheirAlphaEvenWhereABodyFillsTheFrame) {
-  const fs::path dir = scratch_dir("run_alpha");
-  const fs::path box = write_box_off(dir / "box.off", Eigen::Vector3d(-0.15, 0.0, -0.15), Eigen::Vector3d(0.15, 0.3, 0.15));
-  // The camera 5 cm in front of a face of the 30 cm box: the face is all it sees.
-  for (const char* background : {"transparent", "#1d2127"}) {
-    const fs::path scene = dir / "scene.json";
-    std::ofstream(scene) << R"({"recoil": 1, "simulation": {"duration": 0},
-      "bodies": [{"type": "plane"}, {"type": "static", "mesh": ")" << box.string() << R"("}],
-      "render": {"resolution": [32, 32], "background": ")" << background << R"(",
-                 "camera": {"mode": "fixed", "position": [0, 0.15, 0.2], "target": [0, 0.15, 0]}}})";
-    const fs::path out = dir / (background[0] == '#' ? "opaque" : "transparent");
-    const CommandResult r = run_recoil("run " + shell_quote(scene) + " -q -o " + shell_quote(out));
-    ASSERT_EQ(r.exit_code, 0) << r.err;
-    const render::Image frame = render::read_png(out / "frame_0001.png");
-    for (size_t i = 3; i < frame.rgba.size(); i += 4) ASSERT_EQ(frame.rgba[i], 255) << "the box fills the frame";
-    // Every frame of a transparent run has an alpha channel, so a sequence has one colour type.
-    EXPECT_EQ(png_colour_type(out / "frame_0001.png"), background[0] == '#' ? 2 : 6) << background;
-  }
-}
-
 TEST(TurntableCommand, BadInputIsExit2AndUnwritableOutputIsExit4) {
   const fs::path dir = scratch_dir("turntable_bad");
   EXPECT_EQ(run_recoil("turntable /nonexistent.obj -o " + shell_quote(dir)).exit_code, 2);
