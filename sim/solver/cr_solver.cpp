@@ -355,8 +355,12 @@ void CrSolver::restart_recurrence() {
   m_rho = m_z.dot(m_bz);
   m_since_restart = 0;
   update_stationary();
+  // A stationary residual is final (run() stops on it): z^T B z ~ 0 is then
+  // expected, and a rescue step would only move y off the explicit residual,
+  // so that the next recheck restarts again, to the end of the budget.
   double constraint_inf = 0.0;
-  if (std::abs(m_rho) <= kBreakdown * m_z.norm() * m_bz.norm() && residual_norm(constraint_inf) >= m_settings.tolerance)
+  if (!m_stationary && std::abs(m_rho) <= kBreakdown * m_z.norm() * m_bz.norm() &&
+      residual_norm(constraint_inf) >= m_settings.tolerance)
     rescue_step();
 }
 
