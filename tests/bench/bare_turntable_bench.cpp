@@ -1,7 +1,8 @@
-// recoil's turntable against the least an offscreen OSMesa program must do
-// for the same frames: one static mesh, a lit shader, 4x MSAA resolved and
-// read back, each frame PNG-encoded at level 1, 36 frames at 1920x1080 round
-// the mesh. The bare program gives the floor recoil's look and pipeline add to.
+// recoil's turntable and drop against the least an offscreen OSMesa program
+// must do for the same frames: one static mesh, a lit shader, 4x MSAA
+// resolved and read back, each frame PNG-encoded at level 1, 36 frames at
+// 1920x1080 round the mesh. The bare program gives the floor recoil's look
+// and pipeline add to.
 #include <unistd.h>
 
 #include <chrono>
@@ -106,25 +107,50 @@ void main() { o_color = vec4(vec3(0.8, 0.6, 0.4) * (0.2 + 0.8 * max(dot(normaliz
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
-// Wall seconds of `recoil turntable` on `mesh_file` with `flags`, less the world's build (run.json).
-double recoil_seconds(const fs::path& mesh_file, const std::string& flags, const fs::path& out) {
-  const std::string command = std::string(RECOIL_BINARY) + " -q turntable '" + mesh_file.string() + "' --turn-frames " +
-                              std::to_string(kFrames) + " --resolution 1920x1080 --msaa 4 --png-level 1 " + flags +
-                              " -o '" + out.string() + "'";
-  if (std::system(command.c_str()) != 0) return NAN;
+// Wall seconds of `recoil` writing 36 frames at 1920x1080: `command` names
+// the subcommand, the mesh and its own options, `flags` the look. Less the
+// world's build and the simulation's steps (run.json), which run before the
+// frames and beside them; what is left is drawing and writing the frames.
+double recoil_seconds(const std::string& command, const std::string& flags, const fs::path& out) {
+  const std::string line = std::string(RECOIL_BINARY) + " -q " + command +
+                           " --resolution 1920x1080 --msaa 4 --png-level 1 " + flags + " -o '" + out.string() + "'";
+  if (std::system(line.c_str()) != 0) return NAN;
   const nlohmann::json t = nlohmann::json::parse(std::ifstream(out / "run.json"))["timings_ms"];
-  return (t["total"].get<double>() - t["build"].get<double>()) * 1e-3;
+  return (t["total"].get<double>() - t["build"].get<double>() - t["step"].get<double>()) * 1e-3;
+}
+
+// The same three looks against the bare program's time, as one table row.
+std::vector<std::string> ratio_row(const std::string& name, const sim::TriMesh& mesh, double bare,
+                                   const std::string& command, const fs::path& out) {
+  const double occlusion = recoil_seconds(command, "--ao", out.string() + "_ao");
+  const double shadows = recoil_seconds(command, "", out.string() + "_shadows");
+  const double off = recoil_seconds(command, "--no-shadows --no-ground", out.string() + "_off");
+  return {name,
+          std::to_string(mesh.num_triangles()),
+          fixed(bare, 2),
+          fixed(occlusion, 2),
+          fixed(occlusion / bare, 2),
+          fixed(shadows, 2),
+          fixed(shadows / bare, 2),
+          fixed(off, 2),
+          fixed(off / bare, 2)};
 }
 
 void bench_bare_turntable() {
-  BenchTable table("turntable against a bare OSMesa program, 36 frames at 1920x1080, MSAA 4, PNG level 1",
-                   {"mesh", "triangles", "bare s", "recoil, shadows + AO s", "x bare", "recoil, shadows s", "x bare",
-                    "recoil, all off s", "x bare"});
-  table.note(
+  const std::vector<std::string> columns = {"mesh", "triangles", "bare s", "recoil, shadows + AO s", "x bare",
+                                            "recoil, shadows s", "x bare", "recoil, all off s", "x bare"};
+  BenchTable turntable("turntable against a bare OSMesa program, 36 frames at 1920x1080, MSAA 4, PNG level 1", columns);
+  turntable.note(
       "The bare program (this bench, one process) uploads the mesh once and per frame draws it with one lit "
       "shader into a 4x MSAA target, resolves, reads back and PNG-encodes at level 1, one frame after another. "
       "recoil is `recoil turntable` as a user runs it (its own run.json, less the world's build): with shadows and "
       "the ground and `--ao`, with shadows and the ground, and with `--no-shadows --no-ground`.");
+  BenchTable drop("drop against the same bare program, 36 frames at 1920x1080, MSAA 4, PNG level 1", columns);
+  drop.note(
+      "recoil is `recoil drop MESH --material rigid --seconds 1.2 --frames 1-36` (37 frames, the first 36 written), the same looks as above, less the "
+      "world's build and the simulation's steps (run.json): drawing and writing frames of a body that falls, bounces "
+      "and rests, so the shadow map and the occlusion are drawn again every frame. The bare program's time is the "
+      "turntable's: it draws the mesh once a frame whatever the view.");
   const fs::path dir = fs::temp_directory_path() / ("recoil_bench_bare_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   struct Subject {
@@ -140,16 +166,16 @@ void bench_bare_turntable() {
   subjects.push_back({"torus", torus, sim::import_surface(torus)});
   for (const Subject& s : subjects) {
     const double bare = bare_seconds(s.mesh);
-    const double occlusion = recoil_seconds(s.file, "--ao", dir / (std::string(s.name) + "_ao"));
-    const double shadows = recoil_seconds(s.file, "", dir / (std::string(s.name) + "_shadows"));
-    const double off = recoil_seconds(s.file, "--no-shadows --no-ground", dir / (std::string(s.name) + "_off"));
-    table.add_row({s.name, std::to_string(s.mesh.num_triangles()), fixed(bare, 2), fixed(occlusion, 2),
-                   fixed(occlusion / bare, 2), fixed(shadows, 2), fixed(shadows / bare, 2), fixed(off, 2),
-                   fixed(off / bare, 2)});
+    const std::string file = "'" + s.file.string() + "'";
+    turntable.add_row(ratio_row(s.name, s.mesh, bare, "turntable " + file + " --turn-frames " + std::to_string(kFrames),
+                                dir / (std::string(s.name) + "_turntable")));
+    drop.add_row(ratio_row(s.name, s.mesh, bare, "drop " + file + " --material rigid --seconds 1.2 --frames 1-" + std::to_string(kFrames),
+                           dir / (std::string(s.name) + "_drop")));
   }
   std::error_code ec;
   fs::remove_all(dir, ec);
-  table.print();
+  turntable.print();
+  drop.print();
 }
 
 const Register registered_bare_turntable("bare_turntable", bench_bare_turntable);
