@@ -142,8 +142,15 @@ TetMesh tetrahedralize(const TriMesh& surface, int resolution, TetrahedralizeSta
         int corner[8];
         for (int c = 0; c < 8; ++c)
           corner[c] = node_of[static_cast<size_t>(vertex_id(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)))];
+        // A cell odd along an axis takes the split mirrored across it (corner
+        // index XOR the parity bits). One diagonal everywhere made the lattice
+        // lean along (1, 1, 1): a ball dropped straight down rolled away, a
+        // stack of cubes leaned. A face's diagonal depends only on the parities
+        // of the two axes it spans, which both its cells share, so neighbours
+        // still agree on it.
+        const int parity = (i & 1) | ((j & 1) << 1) | ((k & 1) << 2);
         for (const auto& tet : kKuhnTets) {
-          for (int q = 0; q < 4; ++q) mesh.tets(t, q) = corner[tet[q]];
+          for (int q = 0; q < 4; ++q) mesh.tets(t, q) = corner[tet[q] ^ parity];
           if (tet_volume(mesh, static_cast<int>(t)) < 0.0) std::swap(mesh.tets(t, 2), mesh.tets(t, 3));
           ++t;
         }

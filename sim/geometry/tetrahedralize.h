@@ -1,8 +1,9 @@
 #pragma once
 // Lattice tetrahedralization of a triangle surface, closed or not: a cubic grid with `resolution` cells along the
 // surface's longest side; every cell that is inside the surface or crossed by
-// it is kept and split into six tets around its main diagonal (Freudenthal /
-// Kuhn split: neighbouring cells share faces without alternating patterns).
+// it is kept and split into six tets around a diagonal (the Freudenthal /
+// Kuhn split), mirrored from cell to cell so that the lattice has no preferred
+// direction: a body of an even number of cells a side is symmetric.
 // A cell is inside when the surface's generalized winding number at its centre
 // exceeds 1/2 in magnitude (sim/geometry/winding_number.h): holes, flipped
 // patches and overlapping shells shift it smoothly instead of flipping it, and

@@ -47,8 +47,10 @@ struct ContactPolicy {
   // rows never come on together.
   double parallel = 0.9;
   // In epsilon_2: the smallest friction step taken while the friction law is
-  // off by more than epsilon_2, so a decayed gain cannot hide a wrong slip.
-  double registered_change = 2.0;
+  // off by more than epsilon_2, so a decayed gain cannot hide a wrong slip;
+  // just above what Algorithm 2 accepts, since a longer step overshoots a
+  // fixed point that coupled contacts share and swings across it.
+  double registered_change = 1.05;
   // A secant turn of the slip only where the direction error contracts by
   // less than this per solve (linear convergence beside sticking neighbours)...
   double secant_contraction = 0.95;

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <iostream>
 #include <map>
+#include <set>
 
 #include "core/error.h"
 #include "sim/geometry/boundary.h"
@@ -138,6 +139,38 @@ TEST(Tetrahedralize, SameSurfaceSameBytes) {
   ASSERT_EQ(a.tets.rows(), b.tets.rows());
   EXPECT_EQ(std::memcmp(a.nodes.data(), b.nodes.data(), sizeof(double) * static_cast<size_t>(a.nodes.size())), 0);
   EXPECT_TRUE(a.tets == b.tets);
+}
+
+// The lattice prefers no direction: a cube of an even number of cells is
+// split the same way on either side of each of its mid-planes, so its tets
+// mirrored across any of them are its tets again. One diagonal for every cell
+// mapped (0, 0, 0)-(1, 1, 1) diagonals onto (1, 0, 0)-(0, 1, 1) ones.
+TEST(Tetrahedralize, AnEvenCubeIsItsOwnMirrorImage) {
+  const TetMesh tets = tetrahedralize(make_box(Eigen::Vector3d::Constant(0.2), 4), 4);
+  const Eigen::Vector3d lo = tets.nodes.colwise().minCoeff(), hi = tets.nodes.colwise().maxCoeff();
+  std::map<std::array<long, 3>, int> node_at;  // nodes by position, in 1e-9 m
+  const auto key = [](const Eigen::Vector3d& p) {
+    return std::array<long, 3>{std::lround(p.x() * 1e9), std::lround(p.y() * 1e9), std::lround(p.z() * 1e9)};
+  };
+  for (int n = 0; n < tets.num_nodes(); ++n) node_at[key(tets.nodes.row(n).transpose())] = n;
+  const auto sorted_tet = [&](int t, int axis) {
+    std::array<int, 4> ids{};
+    for (int q = 0; q < 4; ++q) {
+      Eigen::Vector3d p = tets.nodes.row(tets.tets(t, q)).transpose();
+      if (axis >= 0) p[axis] = lo[axis] + hi[axis] - p[axis];
+      const auto it = node_at.find(key(p));
+      ids[static_cast<size_t>(q)] = it == node_at.end() ? -1 : it->second;
+    }
+    std::sort(ids.begin(), ids.end());
+    return ids;
+  };
+  std::set<std::array<int, 4>> own;
+  for (int t = 0; t < tets.num_tets(); ++t) own.insert(sorted_tet(t, -1));
+  for (int axis = 0; axis < 3; ++axis) {
+    int unmatched = 0;
+    for (int t = 0; t < tets.num_tets(); ++t) unmatched += own.count(sorted_tet(t, axis)) == 0;
+    EXPECT_EQ(unmatched, 0) << "mirrored across axis " << axis << ", of " << tets.num_tets() << " tets";
+  }
 }
 
 TEST(Tetrahedralize, TriangleBoxOverlap) {
