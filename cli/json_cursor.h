@@ -37,6 +37,8 @@ class JsonCursor {
 
   // Throws bad_input "FILE: /POINTER: message".
   [[noreturn]] void fail(const std::string& message) const;
+  // fail("expected EXPECTED, got" the value's type and an excerpt of it).
+  [[noreturn]] void type_error(const char* expected) const;
 
   // Requires an object whose keys are all in `allowed`; an unknown key fails
   // with a near-miss suggestion ("did you mean ...?").
@@ -69,7 +71,6 @@ class JsonCursor {
   Eigen::Vector3d vec3_in_or(const std::string& key, const Eigen::Vector3d& fallback, const Range& component) const;
 
  private:
-  [[noreturn]] void type_error(const char* expected) const;
   double number() const;  // finite, not yet range-checked
 
   const nlohmann::json* m_in;

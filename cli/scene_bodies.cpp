@@ -73,6 +73,7 @@ sim::FrictionDesc parse_friction(const JsonCursor& c) {
     f.static_coefficient = f.kinetic_coefficient = c.number_in(kFrictionRange);
     return f;
   }
+  if (!c.value().is_object()) c.type_error("a number or an object {\"static\", \"kinetic\"}");
   c.expect_object({"static", "kinetic"});
   f.static_coefficient = c.child("static").number_in(kFrictionRange);
   const JsonCursor kinetic = c.child("kinetic");
