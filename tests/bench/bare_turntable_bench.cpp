@@ -147,10 +147,11 @@ void bench_bare_turntable() {
       "the ground and `--ao`, with shadows and the ground, and with `--no-shadows --no-ground`.");
   BenchTable drop("drop against the same bare program, 36 frames at 1920x1080, MSAA 4, PNG level 1", columns);
   drop.note(
-      "recoil is `recoil drop MESH --material rigid --seconds 1.2 --frames 1-36` (37 frames, the first 36 written), the same looks as above, less the "
-      "world's build and the simulation's steps (run.json): drawing and writing frames of a body that falls, bounces "
-      "and rests, so the shadow map and the occlusion are drawn again every frame. The bare program's time is the "
-      "turntable's: it draws the mesh once a frame whatever the view.");
+      "recoil is `recoil drop MESH --material rigid --seconds 1.2 --frames 1-36` (37 frames, the first 36 "
+      "written), the same looks as above, less the world's build and the simulation's steps (run.json): drawing "
+      "and writing frames of a body that falls, bounces and rests, so the shadow map and the occlusion are drawn "
+      "again every frame. The bare program's time is the turntable's: it draws the mesh once a frame whatever the "
+      "view.");
   const fs::path dir = fs::temp_directory_path() / ("recoil_bench_bare_" + std::to_string(::getpid()));
   fs::create_directories(dir);
   struct Subject {
@@ -169,7 +170,8 @@ void bench_bare_turntable() {
     const std::string file = "'" + s.file.string() + "'";
     turntable.add_row(ratio_row(s.name, s.mesh, bare, "turntable " + file + " --turn-frames " + std::to_string(kFrames),
                                 dir / (std::string(s.name) + "_turntable")));
-    drop.add_row(ratio_row(s.name, s.mesh, bare, "drop " + file + " --material rigid --seconds 1.2 --frames 1-" + std::to_string(kFrames),
+    drop.add_row(ratio_row(s.name, s.mesh, bare,
+                           "drop " + file + " --material rigid --seconds 1.2 --frames 1-" + std::to_string(kFrames),
                            dir / (std::string(s.name) + "_drop")));
   }
   std::error_code ec;
