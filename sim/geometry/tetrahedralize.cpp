@@ -143,11 +143,9 @@ TetMesh tetrahedralize(const TriMesh& surface, int resolution, TetrahedralizeSta
         for (int c = 0; c < 8; ++c)
           corner[c] = node_of[static_cast<size_t>(vertex_id(i + (c & 1), j + ((c >> 1) & 1), k + ((c >> 2) & 1)))];
         // A cell odd along an axis takes the split mirrored across it (corner
-        // index XOR the parity bits). One diagonal everywhere made the lattice
-        // lean along (1, 1, 1): a ball dropped straight down rolled away, a
-        // stack of cubes leaned. A face's diagonal depends only on the parities
-        // of the two axes it spans, which both its cells share, so neighbours
-        // still agree on it.
+        // index XOR the parity bits), so the lattice prefers no direction; a
+        // face's diagonal depends only on the parities of the two axes it
+        // spans, which both its cells share, so neighbours agree on it.
         const int parity = (i & 1) | ((j & 1) << 1) | ((k & 1) << 2);
         for (const auto& tet : kKuhnTets) {
           for (int q = 0; q < 4; ++q) mesh.tets(t, q) = corner[tet[q] ^ parity];

@@ -228,8 +228,12 @@ void update_kinetic_friction(const ContactRows& rows, const ContactState& s, con
       const double t = std::min(1.0, e.policy.registered_change * e.eps2 / whole_change);
       p.state.lambda_kinetic = s.lambda_kinetic + t * (lambda_now - s.lambda_kinetic);
       restart_lambda_window(p.track, p.state.lambda_kinetic);
-      const Eigen::Vector2d moved = s.slip + t * (aim - s.slip);
-      if (moved.norm() > 0.0) p.state.slip = moved.normalized();
+      // Along the arc, not the chord: a normalised chord point turns by less
+      // than t of the angle, and a wide turn then fell below epsilon_2.
+      if (s.slip.squaredNorm() > 0.0 && aim.squaredNorm() > 0.0)
+        p.state.slip = Eigen::Rotation2Dd(t * signed_angle(s.slip, aim)) * s.slip;
+      else if (aim.squaredNorm() > 0.0)
+        p.state.slip = aim.normalized();
       p.track.alpha = std::max(p.track.alpha, t);
       applied = impulse_change(p.state);
     }

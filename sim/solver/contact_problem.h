@@ -137,9 +137,10 @@ enum class KrylovStart {
   relinearization,  // the rows were recomputed at the predicted positions
   recheck,          // the recurrence's residual was below tolerance (or stationary): recomputed explicitly
   breakdown,        // the CR recurrence broke down
+  past_dimension,   // one Krylov solve ran as many iterations as the system has rows
 };
-inline constexpr int kKrylovStarts = 8;
-static_assert(static_cast<int>(KrylovStart::breakdown) + 1 == kKrylovStarts, "one count per KrylovStart");
+inline constexpr int kKrylovStarts = 9;
+static_assert(static_cast<int>(KrylovStart::past_dimension) + 1 == kKrylovStarts, "one count per KrylovStart");
 const char* to_string(KrylovStart start);
 
 struct ContactSolverStats {

@@ -39,6 +39,7 @@ const char* to_string(KrylovStart start) {
     case KrylovStart::relinearization: return "relinearization";
     case KrylovStart::recheck: return "recheck";
     case KrylovStart::breakdown: return "breakdown";
+    case KrylovStart::past_dimension: return "past dimension";
   }
   return "unknown";
 }

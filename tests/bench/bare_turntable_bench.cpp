@@ -143,7 +143,7 @@ void bench_bare_turntable() {
   turntable.note(
       "The bare program (this bench, one process) uploads the mesh once and per frame draws it with one lit "
       "shader into a 4x MSAA target, resolves, reads back and PNG-encodes at level 1, one frame after another. "
-      "recoil is `recoil turntable` as a user runs it (its own run.json, less the world's build): with shadows and "
+      "recoil is `recoil turntable` as a user runs it (its own run.json, less the world's build and steps): with shadows and "
       "the ground and `--ao`, with shadows and the ground, and with `--no-shadows --no-ground`.");
   BenchTable drop("drop against the same bare program, 36 frames at 1920x1080, MSAA 4, PNG level 1", columns);
   drop.note(

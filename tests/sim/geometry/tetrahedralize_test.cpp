@@ -147,6 +147,7 @@ TEST(Tetrahedralize, SameSurfaceSameBytes) {
 // mapped (0, 0, 0)-(1, 1, 1) diagonals onto (1, 0, 0)-(0, 1, 1) ones.
 TEST(Tetrahedralize, AnEvenCubeIsItsOwnMirrorImage) {
   const TetMesh tets = tetrahedralize(make_box(Eigen::Vector3d::Constant(0.2), 4), 4);
+  ASSERT_EQ(tets.num_tets(), 6 * 4 * 4 * 4);  // the cube's own cells, no more
   const Eigen::Vector3d lo = tets.nodes.colwise().minCoeff(), hi = tets.nodes.colwise().maxCoeff();
   std::map<std::array<long, 3>, int> node_at;  // nodes by position, in 1e-9 m
   const auto key = [](const Eigen::Vector3d& p) {
