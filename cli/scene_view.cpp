@@ -41,6 +41,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
       m_render.ground_height = static_cast<float>(plane.point.y());
     } else {
       m_render.meshes.push_back(to_render_mesh(slab_for(plane), kSlabColor));
+      m_render.meshes.back().rigid = true;
     }
   }
   RenderLookCache looks;
@@ -52,6 +53,7 @@ SceneView::SceneView(const SceneDesc& scene, const std::vector<sim::BodySurface>
     sim::TriMesh mesh{s.positions, s.triangles, body && body->color_given ? nullptr : s.look};
     m_mesh_of_surface.push_back(static_cast<int>(m_render.meshes.size()));
     m_render.meshes.push_back(to_render_mesh(mesh, color, opacity, &looks));
+    m_render.meshes.back().rigid = s.kind != sim::BodyKind::deformable;
     const sim::Aabb b = sim::bounding_box(s.positions);
     if (!b.valid()) continue;
     if (s.name == m_camera.body) {

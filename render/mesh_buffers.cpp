@@ -4,6 +4,7 @@
 #include <numeric>
 
 #include "core/check.h"
+#include "render/depth_proxy.h"
 #include "render/vertex_normals.h"
 
 namespace recoil::render {
@@ -32,7 +33,9 @@ MeshBuffers::MeshBuffers()
       m_normals(gl::Buffer::create()),
       m_elements(gl::Buffer::create()),
       m_colors(gl::Buffer::create()),
-      m_uvs(gl::Buffer::create()) {
+      m_uvs(gl::Buffer::create()),
+      m_depth_array(gl::VertexArray::create()),
+      m_depth_elements(gl::Buffer::create()) {
   glBindVertexArray(m_vertex_array.get());
   glBindBuffer(GL_ARRAY_BUFFER, m_positions.get());
   glEnableVertexAttribArray(0);
@@ -45,6 +48,11 @@ MeshBuffers::MeshBuffers()
   glBindBuffer(GL_ARRAY_BUFFER, m_uvs.get());
   glVertexAttribPointer(3, 2, GL_FLOAT, GL_FALSE, 0, nullptr);
   glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_elements.get());
+  glBindVertexArray(m_depth_array.get());
+  glBindBuffer(GL_ARRAY_BUFFER, m_positions.get());
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, 0, nullptr);
+  glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, m_depth_elements.get());
   glBindVertexArray(0);
 }
 
@@ -69,6 +77,28 @@ void MeshBuffers::set_topology(const RenderMesh& mesh) {
   glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(drawn.size() * sizeof(std::uint32_t)), drawn.data(),
                GL_STATIC_DRAW);
   glBindVertexArray(0);
+  m_rigid = mesh.rigid;
+  set_depth_proxy(mesh);
+}
+
+void MeshBuffers::set_depth_proxy(const RenderMesh& mesh) {
+  m_depth_indices = 0;
+  if (!mesh.rigid || mesh.indices.empty()) return;
+  // Simplified over the input's own vertices, where no crease or seam splits
+  // the surface, then moved onto one drawn copy of each (same position).
+  std::vector<std::uint32_t> proxy = depth_proxy_indices(mesh.positions, mesh.indices, kDepthProxyError);
+  if (proxy.size() >= mesh.indices.size()) return;
+  const std::vector<std::uint32_t>& source = m_look ? m_drawn.source : m_smooth.source;
+  if (m_look || !m_smooth.identity) {
+    std::vector<std::uint32_t> drawn_of(mesh.positions.size() / 3, 0);
+    for (size_t v = source.size(); v-- > 0;) drawn_of[source[v]] = static_cast<std::uint32_t>(v);
+    for (std::uint32_t& i : proxy) i = drawn_of[i];
+  }
+  glBindVertexArray(m_depth_array.get());
+  glBufferData(GL_ELEMENT_ARRAY_BUFFER, static_cast<GLsizeiptr>(proxy.size() * sizeof(std::uint32_t)), proxy.data(),
+               GL_STATIC_DRAW);
+  glBindVertexArray(0);
+  m_depth_indices = proxy.size();
 }
 
 void MeshBuffers::set_look(const RenderMesh& mesh) {
@@ -134,7 +164,7 @@ void MeshBuffers::set_look(const RenderMesh& mesh) {
 bool MeshBuffers::upload(const RenderMesh& mesh) {
   RECOIL_CHECK(mesh.positions.size() % 3 == 0, "positions.size()=" << mesh.positions.size());
   RECOIL_CHECK(mesh.indices.size() % 3 == 0, "indices.size()=" << mesh.indices.size());
-  const bool topology_changed = mesh.positions.size() != m_input_floats || mesh.look != m_look ||
+  const bool topology_changed = mesh.positions.size() != m_input_floats || mesh.look != m_look || mesh.rigid != m_rigid ||
                                 !std::equal(mesh.indices.begin(), mesh.indices.end(), m_indices.begin(), m_indices.end());
   if (topology_changed) set_topology(mesh);
   else if (mesh.positions == m_sent_positions) return false;
@@ -169,6 +199,19 @@ void MeshBuffers::draw() const {
   // Without a look every vertex is white: the program's albedo alone colours it.
   if (!m_look) glVertexAttrib3f(2, 1.0f, 1.0f, 1.0f);
   glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(drawn.size()), GL_UNSIGNED_INT, nullptr);
+}
+
+void MeshBuffers::draw_depth() const {
+  if (m_depth_indices == 0) {
+    draw();
+    return;
+  }
+  glBindVertexArray(m_depth_array.get());
+  glDrawElements(GL_TRIANGLES, static_cast<GLsizei>(m_depth_indices), GL_UNSIGNED_INT, nullptr);
+}
+
+std::size_t MeshBuffers::depth_triangle_count() const {
+  return m_depth_indices > 0 ? m_depth_indices / 3 : triangle_count();
 }
 
 void MeshBuffers::draw(const Group& group) const {

@@ -36,6 +36,9 @@ struct RenderMesh {
   Rgb color = {0.85f, 0.63f, 0.40f};
   float opacity = 1.0f;                // < 1: blended back to front
   std::shared_ptr<const RenderLook> look;  // null: `color` everywhere
+  // Moves only as a whole, never changing shape: the depth passes may draw
+  // a coarser copy of it made once (depth_proxy.h).
+  bool rigid = false;
 };
 
 struct RenderScene {

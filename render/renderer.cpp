@@ -31,10 +31,10 @@ namespace recoil::render {
 namespace {
 
 // Shadow-map side: about one texel per output pixel across the subject,
-// a power of two between 512 and 2048 (2048 for 720p and 1080p).
+// a power of two between 512 and the largest (2048 for 720p and 1080p).
 int shadow_map_size(const RenderSettings& s) {
   int size = 512;
-  while (size < std::max(s.width, s.height) && size < 2048) size *= 2;
+  while (size < std::max(s.width, s.height) && size < ShadowMap::kLargestSize) size *= 2;
   return size;
 }
 
@@ -305,8 +305,9 @@ void Renderer::Impl::draw_depth(const RenderScene& scene, Accept accept) {
   glCullFace(GL_BACK);
   for (size_t i = 0; i < meshes.size(); ++i) {
     if (!accept(scene.meshes[i].opacity)) continue;
-    set_culling(meshes[i].closed());
-    meshes[i].draw();
+    // The coarser copy may fold a few triangles over: drawn from both sides, it leaves no hole.
+    set_culling(meshes[i].closed() && !meshes[i].has_depth_copy());
+    meshes[i].draw_depth();
   }
   set_culling(false);
 }

@@ -10,6 +10,9 @@ namespace recoil::render {
 
 class ShadowMap {
  public:
+  // The largest map drawn (texels a side), at 720p and above.
+  static constexpr int kLargestSize = 2048;
+
   explicit ShadowMap(int size);
 
   // Fits the light's box around the sphere (center, radius) seen along

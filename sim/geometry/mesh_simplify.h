@@ -1,5 +1,5 @@
 #pragma once
-// Mesh simplification through meshoptimizer (the only includer of
+// Mesh simplification through meshoptimizer (sim/'s only includer of
 // meshoptimizer.h): quadric-error edge collapses that keep a subset of the
 // input's vertices, so the result lies on the input surface at its vertices.
 #include "sim/geometry/tri_mesh.h"

@@ -101,6 +101,25 @@ TEST(SceneView, TiltedPlaneIsDrawnAsASlab) {
   EXPECT_NEAR(top, 0.0, 1e-6);
 }
 
+// Only bodies that never change shape may have their depth drawn from a
+// coarser copy (render_scene.h): rigid and static ones and slabs, never a deformable one.
+TEST(SceneView, OnlyBodiesThatKeepTheirShapeAreDrawnRigid) {
+  const std::string text = R"({"recoil": 1, "bodies": [
+      {"name": "slope", "type": "plane", "normal": [0.5, 1, 0]},
+      {"name": "ball", "type": "deformable", "primitive": {"sphere": 0.1}},
+      {"name": "box", "type": "rigid", "primitive": {"box": [0.1, 0.1, 0.1]}}]})";
+  const cli::SceneDesc scene = cli::parse_scene(nlohmann::json::parse(text), "kinds.json", ".");
+  sim::BodySurface ball = cube_surface("ball", Eigen::Vector3d::Zero());
+  sim::BodySurface box = cube_surface("box", Eigen::Vector3d(1, 0, 0));
+  box.kind = sim::BodyKind::rigid;
+  cli::SceneView view(scene, {ball, box}, 1.0);
+  const render::RenderScene& drawn = view.update({ball, box});
+  ASSERT_EQ(drawn.meshes.size(), 3u);
+  EXPECT_TRUE(drawn.meshes[0].rigid);   // the slab
+  EXPECT_FALSE(drawn.meshes[1].rigid);  // the deformable ball
+  EXPECT_TRUE(drawn.meshes[2].rigid);
+}
+
 }  // namespace recoil::test
 
 namespace recoil::test {
