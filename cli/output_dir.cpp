@@ -2,9 +2,12 @@
 
 #include <signal.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cstdlib>
+#include <vector>
 
+#include "cli/frame_names.h"
 #include "core/error.h"
 
 namespace recoil::cli {
@@ -39,6 +42,43 @@ int remove_stale_temporaries(const fs::path& dir) {
     ++removed;
   }
   if (ec) throw output_error("cannot list output folder " + dir.string() + ": " + ec.message());
+  return removed;
+}
+
+}  // namespace recoil::cli
+
+namespace recoil::cli {
+
+RemovedFrames remove_frames_past(const fs::path& dir, int frame_count) {
+  // frame_ + digits + .png as some run names its frames, and not a name this run's frames have.
+  const auto is_foreign_frame = [frame_count](const std::string& name, long& number) {
+    const std::string prefix = "frame_", suffix = ".png";
+    if (name.size() <= prefix.size() + suffix.size() || name.rfind(prefix, 0) != 0 ||
+        name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
+      return false;
+    const std::string digits = name.substr(prefix.size(), name.size() - prefix.size() - suffix.size());
+    // Four digits at least, as every run names its frames.
+    if (digits.size() < 4 || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
+      return false;
+    number = std::stol(digits);
+    return number < 1 || number > frame_count || frame_file_name(static_cast<int>(number), frame_count) != name;
+  };
+  std::vector<std::pair<long, fs::path>> foreign;
+  std::error_code ec;
+  for (fs::directory_iterator it(dir, ec), end; !ec && it != end; it.increment(ec)) {
+    long number = 0;
+    if (is_foreign_frame(it->path().filename().string(), number)) foreign.emplace_back(number, it->path());
+  }
+  if (ec) throw output_error("cannot list output folder " + dir.string() + ": " + ec.message());
+  std::sort(foreign.begin(), foreign.end());
+  RemovedFrames removed;
+  for (const auto& [number, path] : foreign) {
+    std::error_code remove_ec;
+    fs::remove(path, remove_ec);
+    if (remove_ec) throw output_error("cannot remove " + path.string() + " (a frame of an earlier run): " + remove_ec.message());
+    if (removed.count++ == 0) removed.first = path.filename().string();
+    removed.last = path.filename().string();
+  }
   return removed;
 }
 

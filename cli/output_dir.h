@@ -23,3 +23,18 @@ namespace recoil::cli {
 int remove_stale_temporaries(const std::filesystem::path& dir);
 
 }  // namespace recoil::cli
+
+namespace recoil::cli {
+
+// Deletes the frames an earlier run of another length left in `dir`: files
+// named frame_N.png that no frame of a `frame_count`-frame run is named
+// (N past it, or written with another number of digits: frame_names.h), so
+// the folder holds one run's frames. Returns how many, with the first and
+// last name in sequence order. Throws output_failed when one cannot be removed.
+struct RemovedFrames {
+  int count = 0;
+  std::string first, last;
+};
+RemovedFrames remove_frames_past(const std::filesystem::path& dir, int frame_count);
+
+}  // namespace recoil::cli

@@ -130,7 +130,8 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
   if (global.log_json) {
     const nlohmann::json line = {{"event", "summary"},       {"scene", job.scene.name},
                                  {"steps", result.steps},     {"frames_written", result.frames_written},
-                                 {"frames_skipped", result.frames_skipped}, {"output", job.output_dir.string()},
+                                 {"frames_skipped", result.frames_skipped},
+                                 {"frames_removed", result.removed_frames.count}, {"output", job.output_dir.string()},
                                  {"warnings", warnings}};
     std::cerr << line.dump() << "\n";
   } else if (!global.quiet || !warnings.empty()) {
@@ -140,6 +141,9 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
       if (result.frames_skipped > 0) std::cerr << " (" << result.frames_skipped << " already on disk)";
     }
     std::cerr << " to " << job.output_dir.string();
+    if (const RemovedFrames& gone = result.removed_frames; gone.count > 0)
+      std::cerr << ", removed " << gone.count << " left there by a longer run (" << gone.first
+                << (gone.count > 1 ? " to " + gone.last : "") << ")";
     if (!warnings.empty()) std::cerr << "; warning: " << warnings;
     std::cerr << "\n";
   }

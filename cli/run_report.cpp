@@ -59,7 +59,10 @@ void RunReport::finish(const sim::World& world, const RunResult& result, double 
   timings.total = total_ms;
   const sim::WorldCounters& c = world.counters();
   const std::optional<double> peak = peak_memory_mib();
-  m_tail = {{"frames", {{"written", result.frames_written}, {"skipped", result.frames_skipped}}},
+  m_tail = {{"frames",
+             {{"written", result.frames_written},
+              {"skipped", result.frames_skipped},
+              {"removed", result.removed_frames.count}}},
             {"steps", result.steps},
             {"simulated_seconds", world.time()},
             {"peak_memory_mib", peak ? nlohmann::json(*peak) : nlohmann::json()},

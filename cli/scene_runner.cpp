@@ -296,6 +296,9 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     result.message = "interrupted by " + signal_name(result.interrupted_by) + " after " + std::to_string(next) +
                      " of " + std::to_string(selected.size()) + " frames; run the same command with --resume to finish";
   if (video && !result.failed && !result.interrupted_by) video->finish();
+  // A finished run leaves the folder one run's frames: a longer earlier run's tail goes.
+  if (job.render && !result.failed && !result.interrupted_by)
+    result.removed_frames = remove_frames_past(job.output_dir, name_count);
   report.timings.encode = writer ? writer->encode_ms() : 0.0;
   result.steps = world->counters().steps;
   result.quality = report.solve_quality(scene.world.contact.margin);

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "cli/commands.h"
+#include "cli/output_dir.h"
 #include "cli/run_report.h"
 #include "cli/scene_desc.h"
 #include "core/error.h"
@@ -35,6 +36,7 @@ std::string describe_warnings(const SolveQuality& quality);
 struct RunResult {
   int frames_written = 0;
   int frames_skipped = 0;   // --resume: already on disk
+  RemovedFrames removed_frames;  // an earlier, longer run's frames, deleted from the folder
   long steps = 0;
   bool failed = false;
   int interrupted_by = 0;   // SIGINT or SIGTERM that stopped the run early; 0: none

@@ -201,6 +201,28 @@ TEST(RunCommand, ResumeSkipsFramesAlreadyOnDisk) {
   EXPECT_EQ(read_stats(dir / "stats.jsonl").size(), 3u);  // the simulation still ran every frame
 }
 
+// A rerun into a folder that a longer run wrote leaves one run's frames:
+// those past its frame count (or of another name width) go, the ones within
+// it stay even when not selected, and files that are no frame stay.
+TEST(RunCommand, ARerunRemovesTheFramesOfALongerRunAndSaysSo) {
+  const fs::path dir = scratch_dir("run_rerun_shorter");
+  const fs::path scene = source_path("assets/scenes/validation/rest.json");  // 4 s at 30 fps: 121 frames
+  fs::create_directories(dir);
+  for (const char* name : {"frame_0009.png", "frame_9999.png", "frame_00003.png", "frame_12.png", "frame_notes.txt",
+                           "frame_0005.png.bak"})
+    std::ofstream(dir / name) << "earlier";
+  const CommandResult r = run_recoil("run " + shell_quote(scene) + " --frames 1-2 --resolution 32x32 --msaa 0 -o " +
+                                     shell_quote(dir));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("removed 2 left there by a longer run (frame_00003.png to frame_9999.png)"), std::string::npos)
+      << r.err;
+  for (const char* gone : {"frame_9999.png", "frame_00003.png"}) EXPECT_FALSE(fs::exists(dir / gone)) << gone;
+  for (const char* kept : {"frame_0001.png", "frame_0002.png", "frame_0009.png", "frame_12.png", "frame_notes.txt",
+                           "frame_0005.png.bak"})
+    EXPECT_TRUE(fs::exists(dir / kept)) << kept;
+  EXPECT_EQ(json::parse(file_bytes(dir / "run.json"))["frames"]["removed"], 2);
+}
+
 TEST(RunCommand, DivergingSceneExits3NamingFrameAndBodyAndKeepsEarlierFrames) {
   const fs::path dir = scratch_dir("run_diverge");
   // A column of nearly no stiffness, pinned at its base, with huge steps:
