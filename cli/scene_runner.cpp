@@ -53,6 +53,25 @@ std::string describe_failure(const sim::StepReport& r, int frame, const std::str
   return s.str();
 }
 
+// How far a deformable body's own weight alone strains it, resting on its
+// base: density * |g| * height / E, its height along gravity at rest. Told
+// when its elements invert, with what holds its shape; empty for a body that is
+// no deformable one.
+std::string self_weight_strain(const sim::World& world, const std::string& body, const Eigen::Vector3d& gravity) {
+  for (int i = 0; i < world.num_deformable_bodies(); ++i) {
+    const sim::DeformableBody& b = world.deformable_body(i);
+    if (b.name != body || gravity.norm() == 0.0) continue;
+    const Eigen::VectorXd along = b.rest.nodes * (gravity / gravity.norm());
+    const double height = along.maxCoeff() - along.minCoeff();
+    const double strain = b.material.density * gravity.norm() * height / b.material.youngs_modulus;
+    return "; its own weight alone strains it by about " + format_number("%.2g", 100.0 * strain) + " % (density " +
+           format_number("%g", b.material.density) + " kg/m^3 x g x height " + format_number("%.3g", height) +
+           " m / E " + format_number("%g", b.material.youngs_modulus) +
+           " Pa): a stiffer material, or a smaller body, keeps its shape";
+  }
+  return {};
+}
+
 }  // namespace
 
 namespace {
@@ -220,7 +239,8 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     } else if (r.status == sim::StepStatus::inverted && inverted_steps > grace_steps) {
       result.failed = true;
       std::ostringstream what;
-      what << r.inverted_tets << " inverted elements for longer than " << kInversionGrace << " s (beyond recovery)";
+      what << r.inverted_tets << " inverted elements for longer than " << kInversionGrace << " s (beyond recovery)"
+           << self_weight_strain(*world, r.body, scene.world.gravity);
       result.message = describe_failure(r, frame, what.str(), scene);
     }
     if (!result.failed && progress.due()) {
