@@ -10,41 +10,7 @@
 
 namespace recoil::sim {
 
-void restart_lambda_window(ContactTrack& track, double lambda_kinetic) {
-  track.lambdas.fill(0.0);
-  track.lambdas[0] = lambda_kinetic;
-  track.samples = 1;
-}
-
-void reset_lambda_window(ContactTrack& track, double lambda_kinetic, double alpha_theta) {
-  restart_lambda_window(track, lambda_kinetic);
-  track.alpha = alpha_theta;
-  track.last_turn = 0;
-  track.streak = 0;
-  track.turned_slip.setZero();
-  track.turned_u.setZero();
-}
-
 namespace {
-
-// Angle (rad) from unit vector a to unit vector b, counter-clockwise
-// positive; atan2 of (cross, dot) is exact near 0, where a cosine is not.
-double signed_angle(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
-  return std::atan2(a.x() * b.y() - a.y() * b.x(), a.dot(b));
-}
-
-// The moving average of the last `window` normal impulses, `lambda` the newest.
-double push_lambda(ContactTrack& track, double lambda, int window) {
-  if (track.samples < window) {
-    track.lambdas[static_cast<size_t>(track.samples++)] = lambda;
-  } else {
-    std::rotate(track.lambdas.begin(), track.lambdas.begin() + 1, track.lambdas.begin() + window);
-    track.lambdas[static_cast<size_t>(window - 1)] = lambda;
-  }
-  double sum = 0.0;
-  for (int i = 0; i < track.samples; ++i) sum += track.lambdas[static_cast<size_t>(i)];
-  return sum / track.samples;
-}
 
 // What one evaluation reads besides the contact itself.
 struct Evaluation {
@@ -88,8 +54,6 @@ Proposal activate(const ContactState& s, const ContactTrack& track, const Eigen:
   const double speed = u.norm();
   p.state.slip = speed > e.eps2 ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
   p.f.setZero();
-  reset_lambda_window(p.track, 0.0, e.policy.alpha_theta);
-  p.track.samples = 0;
   p.mode_change = p.accept = true;
   p.violation = -slack;
   return p;
@@ -113,7 +77,6 @@ void update_static_friction(const ContactRows& rows, const Eigen::Vector2d& u, c
   p.state.lambda_kinetic = std::max(lambda, 0.0);
   p.state.gamma.setZero();
   p.f.tail<2>().setZero();
-  reset_lambda_window(p.track, p.state.lambda_kinetic, e.policy.alpha_theta);
   p.mode_change = p.accept = true;
   p.violation = excess;
 }
@@ -140,106 +103,16 @@ bool reverses(const ContactRows& rows, const ContactState& s, const Eigen::Vecto
   return true;
 }
 
-// Algorithm 3, lines 6-8: turns the slip toward its aim, the slip this
-// contact would have without its own friction, u + w_t mu lambda' slip (for
-// an isolated contact the fixed point itself, one solve; aiming at u
-// converges by the factor w_t mu lambda' / |u| per solve). Policy: the gain
-// halves at a turn against the last one and doubles back after
-// alpha_streak turns the same way; where the error is small and
-// contracting only linearly (coupled to sticking neighbours), a bounded
-// secant step on F(theta) = angle(u) - angle(slip) replaces the damped one.
-// Returns the aim; `direction_error` (m/s) is the KKT measure of the
-// current direction.
-Eigen::Vector2d turn_slip(const ContactRows& rows, const ContactState& s, const Eigen::Vector2d& u, double w_t,
-                          const Evaluation& e, Proposal& p, double& direction_error) {
-  const ContactPolicy& policy = e.policy;
+// Algorithm 3 for a sliding contact without a direction yet (activated
+// while u was below epsilon_2): lambda' is the current lambda (lines 4-5),
+// and the slip takes u's direction once u is above epsilon_2 (lines 6-8).
+void direct_slip(const ContactRows& rows, const Eigen::Vector2d& u, double w_t, const Evaluation& e, Proposal& p) {
+  const double lambda = std::max(p.f[0], 0.0);
   const double speed = u.norm();
-  Eigen::Vector2d aim = s.slip;
-  if (!(speed > e.eps2)) return aim;
-  const Eigen::Vector2d u_hat = u / speed;
-  if (s.slip.squaredNorm() == 0.0) {  // undirected: take u's direction
-    p.state.slip = aim = u_hat;
-    return aim;
-  }
-  const double error_now = signed_angle(s.slip, u_hat);  // rad, from the slip to u
-  if (!(std::abs(error_now) > policy.eps_theta)) return aim;  // line 6: theta below epsilon_theta
-  // The same measure as the KKT residual's, on lambda'.
-  direction_error = slip_direction_error(rows.mu_kinetic * p.state.lambda_kinetic * w_t, u, s.slip);
-  const int turn = error_now > 0.0 ? 1 : -1;
-  if (turn == -p.track.last_turn) {
-    p.track.alpha *= 0.5;
-    p.track.streak = 0;
-  } else if (++p.track.streak >= policy.alpha_streak) {
-    p.track.alpha = std::min(policy.alpha_theta, 2.0 * p.track.alpha);
-    p.track.streak = 0;
-  }
-  p.track.last_turn = turn;
-  const Eigen::Vector2d target = u + w_t * rows.mu_kinetic * s.lambda_kinetic * s.slip;
-  aim = target.norm() > 0.0 ? Eigen::Vector2d(target.normalized()) : u_hat;
-  Eigen::Vector2d moved = s.slip + p.track.alpha * (aim - s.slip);  // lines 7-8
-  if (p.track.turned_slip.squaredNorm() > 0.0) {
-    const double error_before = signed_angle(p.track.turned_slip, p.track.turned_u);
-    const double turned = signed_angle(p.track.turned_slip, s.slip);
-    const double ratio = error_now / error_before;
-    if (std::abs(error_now) < policy.secant_range && std::abs(turned) > policy.eps_theta && ratio > 0.0 &&
-        ratio < policy.secant_contraction) {
-      const double reach = policy.secant_reach * std::abs(error_now);
-      const double step = std::clamp(-error_now * turned / (error_now - error_before), -reach, reach);
-      if (step * error_now > 0.0) moved = Eigen::Rotation2Dd(step) * s.slip;
-    }
-  }
-  p.track.turned_slip = s.slip;
-  p.track.turned_u = u_hat;
-  if (moved.norm() > 0.0) p.state.slip = moved.normalized();
-  return aim;
-}
-
-// Algorithm 3 (UpdateKineticFriction) for a sliding contact at a converged
-// evaluation: lambda' becomes the moving average of lambda (lines 4-5), the
-// slip turns (lines 6-8, turn_slip), and line 9's impulse -mu lambda' slip
-// is what the state now holds. Accepted when it moves the kinetic impulse
-// by more than epsilon_2 (Algorithm 2, line 18). Policy: while the damped
-// change is below that and the law is still off by more, the step grows to
-// registered_change epsilon_2 toward the whole way (lambda' = lambda, slip
-// = aim), never past it: the solve would not iterate for a smaller change,
-// the next evaluation would see the same u, and a decayed gain would hide
-// a wrong direction; the whole way at once swings coupled contacts
-// period-2. A contact whose whole way changes nothing keeps its state, and
-// the end of the solve reports it.
-void update_kinetic_friction(const ContactRows& rows, const ContactState& s, const Eigen::Vector2d& u, double w_t,
-                             const Evaluation& e, Proposal& p) {
-  const double lambda_now = std::max(p.f[0], 0.0);
-  p.state.lambda_kinetic = push_lambda(p.track, lambda_now, e.policy.lambda_window);
-  double direction_error = 0.0;
-  const Eigen::Vector2d aim = turn_slip(rows, s, u, w_t, e, p, direction_error);
-  const auto impulse_change = [&](const ContactState& next) {
-    return rows.mu_kinetic * w_t *
-           std::max((next.lambda_kinetic * next.slip - s.lambda_kinetic * s.slip).norm(),
-                    std::abs(next.lambda_kinetic - s.lambda_kinetic));
-  };
-  const double magnitude_error = rows.mu_kinetic * std::abs(lambda_now - s.lambda_kinetic) * w_t;
-  double applied = impulse_change(p.state);
-  if (applied <= e.eps2 && std::max(magnitude_error, direction_error) > e.eps2) {
-    ContactState whole = p.state;
-    whole.lambda_kinetic = lambda_now;
-    whole.slip = aim;
-    const double whole_change = impulse_change(whole);
-    if (whole_change > e.eps2) {
-      const double t = std::min(1.0, e.policy.registered_change * e.eps2 / whole_change);
-      p.state.lambda_kinetic = s.lambda_kinetic + t * (lambda_now - s.lambda_kinetic);
-      restart_lambda_window(p.track, p.state.lambda_kinetic);
-      // Along the arc, not the chord: a normalised chord point turns by less
-      // than t of the angle, and a wide turn then fell below epsilon_2.
-      if (s.slip.squaredNorm() > 0.0 && aim.squaredNorm() > 0.0)
-        p.state.slip = Eigen::Rotation2Dd(t * signed_angle(s.slip, aim)) * s.slip;
-      else if (aim.squaredNorm() > 0.0)
-        p.state.slip = aim.normalized();
-      p.track.alpha = std::max(p.track.alpha, t);
-      applied = impulse_change(p.state);
-    }
-  }
-  const bool undirected = s.slip.squaredNorm() == 0.0;
-  p.accept = applied > e.eps2 || (undirected && p.state.slip.squaredNorm() > 0.0);
+  const bool directed = speed > e.eps2;
+  if (directed) p.state.slip = u / speed;
+  p.accept = directed || rows.mu_kinetic * w_t * std::abs(lambda - p.state.lambda_kinetic) > e.eps2;
+  p.state.lambda_kinetic = lambda;
 }
 
 // Algorithm 2, lines 5-17, for a contact whose normal row is active, at
@@ -269,8 +142,8 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   }
   if (!e.converged) return p;  // u is not yet trustworthy
   if (!frozen && reverses(rows, s, u, e, p)) return p;  // lines 14-16
-  const bool frictionless = rows.mu_kinetic <= 0.0;
-  if (!frictionless) update_kinetic_friction(rows, s, u, w_t, e, p);  // line 17, frozen or not
+  // Line 17, frozen or not: a directed slip moves with every other one (update_kinetic_friction).
+  if (rows.mu_kinetic > 0.0 && s.slip.squaredNorm() == 0.0) direct_slip(rows, u, w_t, e, p);
   return p;
 }
 
@@ -320,6 +193,59 @@ void hold_back(const ContactProblem& problem, const std::vector<ContactTrack>& t
   }
 }
 
+// Algorithm 3 (UpdateKineticFriction) at a converged evaluation, for every
+// sliding contact with a slip direction at once, the ones changing mode now
+// (`changing`, ascending) aside: x = (lambda', slip angle) per contact moves
+// toward G(x) = (lambda, the aim's angle), the aim being the slip this
+// contact would have without its own friction, u + w_t mu lambda' slip (the
+// fixed point itself for an isolated contact), through `acceleration`
+// (lines 4-8). All move while one's law is off by more than epsilon_2,
+// measured as the KKT residual does (line 18); line 9's impulse -mu lambda'
+// slip is what the states then hold.
+void update_kinetic_friction(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
+                             const Eigen::VectorXd& y, int n, const std::vector<int>& changing, const Evaluation& e,
+                             FrictionAcceleration& acceleration, std::vector<Proposal>& proposals) {
+  std::vector<int> members;
+  std::vector<double> x, g, weights;
+  const Eigen::VectorXd dv = y.head(n);
+  double worst = 0.0;  // m/s: the largest law error among the members
+  for (size_t k = 0; k < problem.states.size(); ++k) {
+    const ContactState& s = problem.states[k];
+    const ContactRows& rows = problem.rows[k];
+    if (s.mode != ContactMode::sliding || s.slip.squaredNorm() == 0.0 || rows.mu_kinetic <= 0.0 ||
+        rows.nodes.empty() || std::binary_search(changing.begin(), changing.end(), static_cast<int>(k)))
+      continue;
+    const double w_t = std::max(tracks[k].w[1], tracks[k].w[2]);
+    const Eigen::Vector2d u = rows_times(rows, dv).tail<2>() - rows.rhs_tangent;
+    const Eigen::Vector2d target = u + w_t * rows.mu_kinetic * s.lambda_kinetic * s.slip;
+    const Eigen::Vector2d aim = target.squaredNorm() > 0.0 ? target : s.slip;
+    const double lambda = std::max(y[n + 3 * static_cast<Eigen::Index>(k)], 0.0);
+    members.push_back(static_cast<int>(k));
+    x.insert(x.end(), {s.lambda_kinetic, std::atan2(s.slip.y(), s.slip.x())});
+    g.insert(g.end(), {lambda, std::atan2(aim.y(), aim.x())});
+    weights.insert(weights.end(), {rows.mu_kinetic * w_t, rows.mu_kinetic * w_t * s.lambda_kinetic});
+    worst = std::max({worst, rows.mu_kinetic * w_t * std::abs(lambda - s.lambda_kinetic),
+                      slip_direction_error(rows.mu_kinetic * w_t * s.lambda_kinetic, u, s.slip)});
+  }
+  if (members.empty() || !(worst > e.eps2)) return;
+  const auto as_vector = [](const std::vector<double>& v) {
+    return Eigen::Map<const Eigen::VectorXd>(v.data(), static_cast<Eigen::Index>(v.size()));
+  };
+  const Eigen::VectorXd next =
+      acceleration.next(members, as_vector(x), as_vector(g), as_vector(weights), e.policy.friction_mixing);
+  for (size_t i = 0; i < members.size(); ++i) {
+    const int k = members[i];
+    Proposal p = unchanged(problem.states[static_cast<size_t>(k)], tracks[static_cast<size_t>(k)],
+                           y.segment<3>(n + 3 * k));
+    p.contact = k;
+    p.state.lambda_kinetic = std::max(next[static_cast<Eigen::Index>(2 * i)], 0.0);
+    const double angle = next[static_cast<Eigen::Index>(2 * i + 1)];
+    p.state.slip = Eigen::Vector2d(std::cos(angle), std::sin(angle));
+    p.accept = true;
+    proposals.push_back(p);
+  }
+}
+
 }  // namespace
 
 // Algorithm 2 (EvaluateConstraints): every contact's proposal (lines 3-17),
@@ -327,12 +253,10 @@ void hold_back(const ContactProblem& problem, const std::vector<ContactTrack>& t
 // the solver rebuilds the right-hand side (line 22).
 EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
                                        const MomentumPreconditioner& P, const ContactSolverSettings& settings,
-                                       bool converged) {
+                                       bool converged, FrictionAcceleration* acceleration) {
   const int m = static_cast<int>(problem.rows.size());
   const int n = static_cast<int>(y.size()) - 3 * m;
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
-  RECOIL_CHECK(settings.policy.lambda_window >= 1 && settings.policy.lambda_window <= kMaxLambdaWindow,
-               "lambda_window " << settings.policy.lambda_window);
   const Evaluation e{settings.policy, settings.constraint_tolerance, converged};
   const Eigen::VectorXd dv = y.head(n);
   std::vector<Proposal> proposals;  // only the contacts that propose a change, in ascending order
@@ -363,6 +287,16 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
     if (p.accept) proposals.push_back(p);
   }
   hold_back(problem, tracks, P, e, proposals);
+  FrictionAcceleration fresh;  // for an evaluation that keeps no pairs
+  if (converged) {
+    if (acceleration == nullptr) acceleration = &fresh;
+    std::vector<int> changing;  // ascending, as the proposals are
+    for (const Proposal& p : proposals)
+      if (p.accept && p.mode_change) changing.push_back(p.contact);
+    // A change of modes changes the system that G(x) solved: the remembered pairs no longer hold.
+    if (!changing.empty()) acceleration->reset();
+    update_kinetic_friction(problem, tracks, y, n, changing, e, *acceleration, proposals);
+  }
   EvaluationChanges changed;
   for (const Proposal& p : proposals) {
     if (!p.accept) continue;

@@ -7,34 +7,21 @@
 // (epsilon_2): an impulse becomes one through the row's effective inverse
 // mass w = diag(J P_A^-1 J^T).
 #include <Eigen/Core>
-#include <array>
 #include <vector>
 
 #include "sim/fem/momentum_preconditioner.h"
 #include "sim/solver/contact_policy.h"
 #include "sim/solver/contact_problem.h"
+#include "sim/solver/friction_acceleration.h"
 
 namespace recoil::sim {
 
 // Solver-side bookkeeping of one contact, beside its ContactState.
 struct ContactTrack {
   Eigen::Vector3d w = Eigen::Vector3d::Zero();  // effective inverse mass of the three rows, 1/kg
-  std::array<double, kMaxLambdaWindow> lambdas{};  // recent normal impulses of a sliding contact, N s
-  int samples = 0;                              // filled entries of `lambdas`
   int flips = 0;                                // mode changes in this solve
   bool locked_off = false;                      // frozen, then let go for pulling: inactive for the rest of the solve
-  double alpha = 1.0;                           // direction gain (from policy.alpha_theta), halved at each overshoot
-  int last_turn = 0;                            // sign of the last direction turn (+1 counter-clockwise)
-  int streak = 0;                               // accepted turns the same way since alpha last changed
-  // The slip direction and the direction of u at the last accepted turn (zero: none yet), for the secant.
-  Eigen::Vector2d turned_slip = Eigen::Vector2d::Zero(), turned_u = Eigen::Vector2d::Zero();
 };
-
-// Starts the moving average of a sliding contact at `lambda_kinetic`, and
-// its direction gain afresh at `alpha_theta`.
-void reset_lambda_window(ContactTrack& track, double lambda_kinetic, double alpha_theta);
-// Starts the moving average only, keeping the direction gain.
-void restart_lambda_window(ContactTrack& track, double lambda_kinetic);
 
 // Evaluates every contact of `problem` at y (#DoF + 3 #contacts); applies
 // the accepted changes to problem.states and to the multipliers in y. P is
@@ -48,8 +35,11 @@ struct EvaluationChanges {
   int friction_updates = 0;  // sliding contacts whose lambda' or slip direction moved, mode kept
   int total() const { return mode_changes + friction_updates; }
 };
+// A converged evaluation moves the sliding contacts' lambda' and slip
+// directions through `acceleration`, which keeps its pairs from one such
+// evaluation to the next (none given: a fresh one, the damped plain step).
 EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
                                        const MomentumPreconditioner& P, const ContactSolverSettings& settings,
-                                       bool converged);
+                                       bool converged, FrictionAcceleration* acceleration = nullptr);
 
 }  // namespace recoil::sim

@@ -98,6 +98,7 @@ class CrSolver {
   KrylovStart m_start = KrylovStart::first_solve;  // what started the current Krylov solve
   bool m_residual_true = false;
   bool m_stationary = false;       // scaled |B C^-1 r| < epsilon_1 (Algorithm 1 line 21)
+  FrictionAcceleration m_acceleration;  // Algorithm 3's pairs since the system last changed otherwise
   bool m_relinearized_ok = false;  // the last relinearize moved nothing beyond epsilon_2, and nothing changed since
   BestSolvedIterate m_best;  // handed back when the solve ends unconverged
 };
@@ -121,11 +122,6 @@ void CrSolver::start_from_warm_states() {
     if (s.mode == ContactMode::sliding) {
       s.lambda_kinetic = std::max(s.lambda_kinetic, 0.0);
       s.slip = s.slip.norm() > 0.0 ? Eigen::Vector2d(s.slip.normalized()) : Eigen::Vector2d::Zero();
-      // lambda' restarts from this step's lambda at the first converged
-      // evaluation: last step's value is a start for the iterate, not a
-      // sample (averaging it in cost several extra solves per warm step).
-      reset_lambda_window(m_tracks[static_cast<size_t>(k)], s.lambda_kinetic, m_settings.policy.alpha_theta);
-      m_tracks[static_cast<size_t>(k)].samples = 0;
     }
     if (s.mode != ContactMode::inactive) m_y[m_n + 3 * k] = s.lambda;
     if (s.mode == ContactMode::sticking) m_y.segment<2>(m_n + 3 * k + 1) = s.gamma;
@@ -394,6 +390,7 @@ void CrSolver::rescue_step() {
 // describes where it will end, and convergence needs a fresh one.
 void CrSolver::restart_after_change(KrylovStart cause) {
   m_relinearized_ok = false;
+  if (cause != KrylovStart::friction_update) m_acceleration.reset();
   build_rhs();
   restart(cause);
 }
@@ -455,16 +452,12 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   // An iterate that already meets every contact law to epsilon_2 (the KKT
   // residual, the measure all solvers are compared by) is a solution, and
   // goes on to the new-contact check and re-linearisation unchanged: its
-  // evaluation could only propose changes of about epsilon_2 (the friction
-  // update's smallest step is just above that), each costing a restarted solve
-  // that may wander off again. It also skips the moving average of lambda'
-  // (within epsilon_2 already). Measured with the slip's secant step
-  // (constraint_evaluation.h); this stop without the secant changed nothing
-  // on the rollers.
+  // evaluation could only propose changes of about epsilon_2, each costing a
+  // restarted solve that may wander off again.
   const bool meets_laws = m_best.offer(m_y) <= eps2;
   if (!meets_laws) {
     const EvaluationChanges changes =
-        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), m_settings, true);
+        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), m_settings, true, &m_acceleration);
     if (changes.total() > 0) {
       restart_after_change(changes.mode_changes > 0 ? KrylovStart::mode_change : KrylovStart::friction_update);
       return Finish::go_on;
@@ -492,6 +485,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   refresh_rows();
   m_best.remeasure();
   build_rhs();
+  m_acceleration.reset();
   restart(KrylovStart::relinearization);
   return Finish::go_on;
 }

@@ -1,0 +1,59 @@
+#include "sim/solver/friction_acceleration.h"
+
+#include <Eigen/QR>
+#include <cmath>
+#include <numbers>
+
+#include "core/check.h"
+
+namespace recoil::sim {
+namespace {
+
+// Angle differences into (-pi, pi]: entries 2i+1 are angles.
+void wrap_angles(Eigen::VectorXd& v) {
+  for (Eigen::Index i = 1; i < v.size(); i += 2) v[i] = std::remainder(v[i], 2.0 * std::numbers::pi);
+}
+
+}  // namespace
+
+void FrictionAcceleration::reset() {
+  m_members.clear();
+  m_x.clear();
+  m_f.clear();
+}
+
+Eigen::VectorXd FrictionAcceleration::next(const std::vector<int>& members, const Eigen::VectorXd& x,
+                                           const Eigen::VectorXd& g, const Eigen::VectorXd& weights,
+                                           double mixing) {
+  RECOIL_CHECK(mixing > 0.0 && mixing <= 1.0, "mixing " << mixing);
+  RECOIL_CHECK(x.size() == g.size() && x.size() == weights.size() &&
+               x.size() == 2 * static_cast<Eigen::Index>(members.size()));
+  if (members != m_members) reset();
+  m_members = members;
+  Eigen::VectorXd f = g - x;
+  wrap_angles(f);
+  if (!m_f.empty() && weights.cwiseProduct(f).norm() > weights.cwiseProduct(m_f.back()).norm()) {
+    reset();
+    m_members = members;
+  }
+  m_x.push_back(x);
+  m_f.push_back(f);
+  if (static_cast<int>(m_f.size()) > kDepth) {
+    m_x.pop_front();
+    m_f.pop_front();
+  }
+  const int columns = static_cast<int>(m_f.size()) - 1;
+  if (columns == 0) return x + mixing * f;
+  Eigen::MatrixXd dF(f.size(), columns), dX(x.size(), columns);
+  for (int j = 0; j < columns; ++j) {
+    dF.col(j) = m_f[static_cast<size_t>(j + 1)] - m_f[static_cast<size_t>(j)];
+    Eigen::VectorXd dx = m_x[static_cast<size_t>(j + 1)] - m_x[static_cast<size_t>(j)];
+    wrap_angles(dx);
+    dX.col(j) = dx;
+  }
+  // min |W (f_k - dF gamma)|: every entry a velocity.
+  const Eigen::VectorXd gamma = (weights.asDiagonal() * dF).colPivHouseholderQr().solve(weights.cwiseProduct(f));
+  return x + mixing * f - (dX + mixing * dF) * gamma;
+}
+
+}  // namespace recoil::sim
