@@ -83,7 +83,8 @@ int run_info(const InfoOptions& options, bool resolution_given) {
     if (resolution_given) throw bad_input("--resolution applies to a mesh; a scene gives each body's tets.resolution");
     return print_scene_info(options.path, options.json);
   }
-  const sim::TriMesh mesh = sim::import_surface(options.path);
+  bool wound_inward = false;
+  const sim::TriMesh mesh = sim::import_surface(options.path, &wound_inward);
   const sim::MeshStats stats = sim::compute_mesh_stats(mesh);
   const Eigen::Vector3d size = stats.bounds.extent();
   // The tets a deformable body of this mesh gets (the same call the World
@@ -119,7 +120,7 @@ int run_info(const InfoOptions& options, bool resolution_given) {
                           {"bounds", to_json(stats.bounds)},
                           {"area", stats.area},
                           {"volume", volume},
-                          {"wound_inward", stats.watertight && stats.volume < 0.0},
+                          {"wound_inward", wound_inward},
                           {"tetrahedra", tetrahedra},
                           {"look", look_json(mesh)}};
     // Material names come from the file as bytes; invalid UTF-8 is shown as U+FFFD.
@@ -142,8 +143,8 @@ int run_info(const InfoOptions& options, bool resolution_given) {
   text << "  bounds       [" << stats.bounds.min.transpose() << "] .. [" << stats.bounds.max.transpose() << "]\n"
        << "  size         " << size.x() << " x " << size.y() << " x " << size.z() << "\n"
        << "  area         " << stats.area << "\n";
-  if (stats.watertight && stats.volume < 0.0)
-    text << "  volume       " << -stats.volume << " (its faces are wound inward: a rigid body refuses it; flip them)\n";
+  if (wound_inward)
+    text << "  volume       " << stats.volume << " (the file's faces are wound inward; recoil turns them outward)\n";
   else if (stats.watertight) text << "  volume       " << stats.volume << "\n";
   else if (volume > 0.0)
     text << "  volume       " << volume << " (inside by winding number, on a grid of " << sim::kWeighingResolution

@@ -97,6 +97,7 @@ layout(location = 3) in vec2 a_uv;
 uniform mat4 u_view_projection;
 uniform mat4 u_light_matrix;     // world to shadow-map [0,1]^3
 uniform float u_normal_offset;   // metres; pushes lookups off the surface against acne
+uniform vec3 u_key_dir;          // unit, world space, towards the key light
 uniform vec4 u_clip_plane;       // (n, d): what has n.p + d < 0 is hidden by the ground, and cut away
 out vec3 v_world;
 out vec3 v_normal;
@@ -108,7 +109,10 @@ void main() {
   v_normal = a_normal;
   v_color = a_color;
   v_uv = a_uv;
-  v_shadow = u_light_matrix * vec4(a_position + u_normal_offset * a_normal, 1.0);
+  // Off the side the key lights, whichever way the mesh is wound: a surface
+  // wound inward pushed its lookups into itself and shadowed itself in stripes.
+  vec3 lit_side = dot(a_normal, u_key_dir) < 0.0 ? -a_normal : a_normal;
+  v_shadow = u_light_matrix * vec4(a_position + u_normal_offset * lit_side, 1.0);
   gl_ClipDistance[0] = dot(u_clip_plane, vec4(a_position, 1.0));
   gl_Position = u_view_projection * vec4(a_position, 1.0);
 }

@@ -22,6 +22,7 @@
 #include "sim/geometry/isolated_reader.h"
 #include "sim/geometry/look_import.h"
 #include "sim/geometry/mesh_header.h"
+#include "sim/geometry/mesh_stats.h"
 
 namespace recoil::sim {
 namespace fs = std::filesystem;
@@ -245,7 +246,7 @@ bool is_mesh_file_name(const fs::path& path) {
   return extension.size() > 1 && Assimp::Importer().IsExtensionSupported(extension);
 }
 
-TriMesh import_surface(const fs::path& path) {
+TriMesh import_surface(const fs::path& path, bool* turned_outward) {
   require_regular_file(path, "mesh file");
   check_declared_mesh_counts(path);
   // assimp reads tens of MiB a second; a reader still busy after 5 s plus 1 s per MiB is stuck in a loop.
@@ -258,6 +259,11 @@ TriMesh import_surface(const fs::path& path) {
     if (!merged.vertices.row(v).allFinite()) throw bad_input(path.string() + ": mesh has non-finite vertex coordinates");
   TriMesh clean = weld_and_clean(merged);
   if (clean.empty()) throw bad_input(path.string() + ": mesh has no triangles");
+  // A closed surface wound inward bounds the same solid turned inside out:
+  // turned over, its normals, back faces and mass read as that solid's.
+  const bool inward = compute_mesh_stats(clean).watertight && enclosed_volume(clean) < 0.0;
+  if (inward) flip_winding(clean);
+  if (turned_outward != nullptr) *turned_outward = inward;
   return clean;
 }
 

@@ -14,10 +14,12 @@ void transform_in_place(TriMesh& mesh, const Eigen::Matrix3d& rotation,
     const Eigen::Vector3d p = mesh.vertices.row(i).transpose();
     mesh.vertices.row(i) = (rotation * scale.cwiseProduct(p) + translation).transpose();
   }
-  if (scale.prod() < 0.0) {
-    mesh.triangles.col(1).swap(mesh.triangles.col(2));
-    if (mesh.look) mesh.look = std::make_shared<const SurfaceLook>(with_swapped_corners(*mesh.look));
-  }
+  if (scale.prod() < 0.0) flip_winding(mesh);
+}
+
+void flip_winding(TriMesh& mesh) {
+  mesh.triangles.col(1).swap(mesh.triangles.col(2));
+  if (mesh.look) mesh.look = std::make_shared<const SurfaceLook>(with_swapped_corners(*mesh.look));
 }
 
 void append(TriMesh& mesh, const TriMesh& other) {

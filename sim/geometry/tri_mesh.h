@@ -48,6 +48,9 @@ inline Eigen::Vector3d point_at(const Points& points, int i) { return points.row
 void transform_in_place(TriMesh& mesh, const Eigen::Matrix3d& rotation,
                         const Eigen::Vector3d& scale, const Eigen::Vector3d& translation);
 
+// Turns every triangle over (corners 1 and 2 swapped, the look's with them).
+void flip_winding(TriMesh& mesh);
+
 // Appends `other` to `mesh`, re-indexing its triangles; the result has no look.
 void append(TriMesh& mesh, const TriMesh& other);
 

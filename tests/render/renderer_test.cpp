@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "core/error.h"
+#include "render/image_metrics.h"
 #include "tests/render/test_meshes.h"
 
 namespace recoil::render {
@@ -276,6 +277,29 @@ TEST(Renderer, KeyLightCastsAShadowOnTheFloor) {
   std::cout << "floor pixels darkened by the shadow: " << darker << " of " << lit.rgba.size() / 4 << "\n";
   EXPECT_GT(darker, 150);  // the box's shadow covers a few hundred pixels here
   EXPECT_EQ(brighter, 0);  // a shadow never adds light
+}
+
+// A surface wound inward (an open scan whose faces point in) is lit and
+// shadowed as the same surface wound outward: its shadow lookups start on
+// the side the key lights, not inside it, where it shadowed itself in stripes.
+TEST(Renderer, AnInwardWoundSurfaceIsShadedAsTheOutwardOne) {
+  RenderSettings settings = small(4, true);
+  settings.width = 160;
+  settings.height = 120;
+  RenderScene scene;
+  RenderMesh outward = test::make_icosphere({0.0f, 0.5f, 0.0f}, 0.5f, 3, {0.8f, 0.6f, 0.4f});
+  outward.indices.resize(outward.indices.size() - 3);  // open: nothing may cull its back faces
+  RenderMesh inward = outward;
+  for (size_t t = 0; t < inward.indices.size(); t += 3) std::swap(inward.indices[t + 1], inward.indices[t + 2]);
+  const Camera camera = frame_bounding_sphere({0.0, 0.5, 0.0}, 0.8, 30.0, 20.0, 40.0, 160.0 / 120.0);
+  scene.meshes = {outward};
+  const Image expected = Renderer(settings).render(scene, camera);
+  scene.meshes = {inward};
+  const Image actual = Renderer(settings).render(scene, camera);
+  const ImageComparison d = compare_images(actual, expected, 2.0 / 255.0);
+  std::cout << "inward against outward: " << 100.0 * d.failing_fraction << " % of pixels off by > 2/255, max "
+            << d.max_difference << "\n";
+  EXPECT_LT(d.failing_fraction, 0.001);
 }
 
 TEST(Renderer, OverATransparentBackgroundTheGroundCatchesOnlyTheShadow) {

@@ -148,6 +148,17 @@ TEST(MeshImport, SameClosedBoxFromEveryFormat) {
   expect_same_box(import_surface(dir / "box.gltf"), Eigen::Vector3d(5, 0, 0), "box.gltf (node transform)");
 }
 
+// A closed box whose faces all point inward reads as the box, faces out:
+// its enclosed volume is positive, so a rigid body of it has a mass.
+TEST(MeshImport, AClosedSurfaceWoundInwardIsTurnedOutward) {
+  const fs::path dir = test::scratch_dir("mesh_import_inward");
+  TriMesh inward = unit_box();
+  flip_winding(inward);
+  ASSERT_LT(enclosed_volume(inward), 0.0);
+  test::write_file(dir / "inward.obj", obj_text(inward));
+  expect_same_box(import_surface(dir / "inward.obj"), Eigen::Vector3d::Zero(), "inward.obj");
+}
+
 TEST(MeshImport, QuadsAreTriangulatedAndBunnyIsClosed) {
   const fs::path dir = test::scratch_dir("mesh_import_quads");
   test::write_file(dir / "quad.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n");
