@@ -139,6 +139,17 @@ std::string describe_run_warnings(const RunResult& result) {
 
 long frame_step(int frame, double fps, double dt) { return std::lround((frame - 1) / (fps * dt)); }
 
+// The video's frame rate: the scene's over the stride of an evenly spaced
+// selection (every 4th frame of 30 fps plays at 7.5), so it plays in real
+// time; the scene's for a selection spaced unevenly, which no rate fits.
+double video_fps(const std::vector<int>& selected, double fps) {
+  if (selected.size() < 2) return fps;
+  const int stride = selected[1] - selected[0];
+  for (size_t i = 2; i < selected.size(); ++i)
+    if (selected[i] - selected[i - 1] != stride) return fps;
+  return fps / stride;
+}
+
 RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const auto start = Clock::now();
   const SceneDesc& scene = job.scene;
@@ -183,7 +194,10 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), size.threads, size.capacity);
   }
 
-  // Outputs only once the world and the renderer exist: a refused scene writes nothing.
+  // Outputs only once the world, the renderer and the video's file exist: a
+  // refused scene or video path writes nothing.
+  if (job.render && !job.video.empty())
+    video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, video_fps(selected, fps));
   ensure_output_dir(job.output_dir);
   remove_stale_temporaries(job.output_dir);
   write_text_atomically(job.output_dir / "scene.json", resolved_scene(scene).dump(2) + "\n");
@@ -192,8 +206,6 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   errno = 0;
   std::ofstream stats_out(stats_path, std::ios::binary | std::ios::trunc);
   if (!stats_out) throw output_error("cannot write " + stats_path.string() + ": " + errno_message(errno));
-  if (job.render && !job.video.empty())
-    video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, fps);
 
   const InterruptScope interrupts;
   const auto run_start = Clock::now();

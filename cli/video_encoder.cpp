@@ -74,12 +74,16 @@ VideoEncoder::VideoEncoder(const fs::path& path, int width, int height, double f
   const VideoFormat& format = *format_of(path);
   // ffmpeg opens the file only once frames arrive: whether it can be written
   // is found out here, before anything is simulated, as for the other outputs.
-  if (path.has_parent_path()) ensure_output_dir(path.parent_path());
+  try {
+    if (path.has_parent_path()) ensure_output_dir(path.parent_path());
+  } catch (const Error& e) {
+    throw output_error("--video " + path.string() + ": " + e.what());
+  }
   errno = 0;
   if (std::FILE* probe = std::fopen(m_partial.c_str(), "wb")) {
     std::fclose(probe);
   } else {
-    throw output_error("cannot write " + m_partial.string() + ": " + errno_message(errno));
+    throw output_error("--video " + path.string() + ": cannot write " + m_partial.string() + ": " + errno_message(errno));
   }
   // A dead ffmpeg must surface as a write error, not kill us with SIGPIPE.
   std::signal(SIGPIPE, SIG_IGN);

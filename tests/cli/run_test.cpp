@@ -375,8 +375,9 @@ TEST(DropCommand, AVideoThatCannotBeWrittenFailsBeforeTheFirstFrame) {
                                      " --seconds 0.1 --resolution 64x48 --video " + shell_quote(dir / "v.gif") +
                                      " -o " + shell_quote(dir / "out"));
   EXPECT_EQ(r.exit_code, 4);
-  EXPECT_EQ(r.err, "recoil: error: cannot write " + (dir / "v.gif.partial").string() + ": Is a directory\n");
-  EXPECT_FALSE(fs::exists(dir / "out" / "frame_0001.png"));
+  EXPECT_EQ(r.err, "recoil: error: --video " + (dir / "v.gif").string() + ": cannot write " +
+                       (dir / "v.gif.partial").string() + ": Is a directory\n");
+  EXPECT_FALSE(fs::exists(dir / "out"));  // nothing written: no folder, no scene.json
   EXPECT_FALSE(fs::exists(dir / "v.gif"));
   EXPECT_FALSE(fs::exists(dir / "v.gif.log"));
 }

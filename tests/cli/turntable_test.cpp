@@ -1,5 +1,7 @@
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include <Eigen/Geometry>
 #include <filesystem>
 #include <fstream>
@@ -178,6 +180,24 @@ TEST(TurntableCommand, VideoAsMp4AndGif) {
     EXPECT_FALSE(fs::exists(dir / (std::string(name) + ".log")));
   }
   EXPECT_TRUE(fs::exists(dir / "frames" / "frame_0006.png"));
+}
+
+// Every 4th frame of a 30 fps turn plays at 7.5 fps, so the video runs in
+// real time rather than four times as fast.
+TEST(TurntableCommand, AVideoOfEveryNthFramePlaysInRealTime) {
+  const fs::path dir = scratch_dir("turntable_video_stride");
+  const fs::path video = dir / "turn.mp4";
+  const CommandResult r = run_recoil("turntable " + bunny() + " --turn-frames 24 --frames 1-24:4 --resolution 64x48 --msaa 0 -q --video " +
+                                     shell_quote(video) + " -o " + shell_quote(dir / "frames"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  std::FILE* probe = ::popen(("ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate,nb_frames -of csv=p=0 " +
+                              shell_quote(video)).c_str(), "r");
+  ASSERT_NE(probe, nullptr);
+  char line[128] = {};
+  const bool read = std::fgets(line, sizeof line, probe) != nullptr;
+  ::pclose(probe);
+  ASSERT_TRUE(read);
+  EXPECT_EQ(std::string(line), "15/2,6\n");
 }
 
 }  // namespace recoil::test
