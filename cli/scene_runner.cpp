@@ -161,7 +161,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   // Frame names keep their width whatever subset is rendered.
   const int name_count = std::max(scene.frame_count(), last_frame);
   if (!job.video.empty()) {
-    require_video(job.video);
+    require_video(job.video, scene.render.background == "transparent");
     if (!job.render) throw bad_input("--video needs rendered frames; drop --no-render");
   }
 
@@ -197,7 +197,8 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   // Outputs only once the world, the renderer and the video's file exist: a
   // refused scene or video path writes nothing.
   if (job.render && !job.video.empty())
-    video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, video_fps(selected, fps));
+    video = std::make_unique<VideoEncoder>(job.video, settings.width, settings.height, video_fps(selected, fps),
+                                          settings.transparent_background);
   ensure_output_dir(job.output_dir);
   remove_stale_temporaries(job.output_dir);
   write_text_atomically(job.output_dir / "scene.json", resolved_scene(scene).dump(2) + "\n");

@@ -36,18 +36,22 @@ namespace {
 
 struct VideoFormat {
   const char* extension;
-  const char* muxer;  // ffmpeg's -f
-  const char* codec;  // what follows the input in the ffmpeg command
+  const char* muxer;        // ffmpeg's -f
+  const char* codec;        // what follows the input in the ffmpeg command
+  const char* alpha_codec;  // the same for frames with transparency; null: the codec holds none
 };
 
-// Even sizes for the 4:2:0 codecs; a GIF keeps its size and gets one palette for the clip.
+// Even sizes for the 4:2:0 codecs; a GIF keeps its size and gets one palette
+// for the clip, with one entry kept for "transparent" when the frames have it.
 constexpr const char* kH264 = "-c:v libx264 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'";
 const VideoFormat kFormats[] = {
-    {".mp4", "mp4", kH264},
-    {".mov", "mov", kH264},
-    {".mkv", "matroska", kH264},
-    {".webm", "webm", "-c:v libvpx-vp9 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'"},
-    {".gif", "gif", "-filter_complex 'split[a][b];[a]palettegen=reserve_transparent=0[p];[b][p]paletteuse'"},
+    {".mp4", "mp4", kH264, nullptr},
+    {".mov", "mov", kH264, nullptr},
+    {".mkv", "matroska", kH264, nullptr},
+    {".webm", "webm", "-c:v libvpx-vp9 -pix_fmt yuv420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2'",
+     "-c:v libvpx-vp9 -pix_fmt yuva420p -vf 'pad=ceil(iw/2)*2:ceil(ih/2)*2:color=black@0'"},
+    {".gif", "gif", "-filter_complex 'split[a][b];[a]palettegen=reserve_transparent=0[p];[b][p]paletteuse'",
+     "-filter_complex 'split[a][b];[a]palettegen=reserve_transparent=1[p];[b][p]paletteuse=alpha_threshold=128'"},
 };
 
 const VideoFormat* format_of(const fs::path& path) {
@@ -59,18 +63,22 @@ const VideoFormat* format_of(const fs::path& path) {
 
 }  // namespace
 
-void require_video(const fs::path& path) {
-  if (!format_of(path))
+void require_video(const fs::path& path, bool transparent) {
+  const VideoFormat* format = format_of(path);
+  if (!format)
     throw bad_input("--video: cannot write '" + path.filename().string() +
                     "'; name the file .mp4, .mov, .mkv, .webm or .gif");
+  if (transparent && !format->alpha_codec)
+    throw bad_input("--video: '" + path.filename().string() +
+                    "' (H.264) holds no transparency; name it .webm or .gif, or give --background a colour");
   if (find_ffmpeg().empty())
     throw bad_input("--video needs ffmpeg, which is not installed; install it with: apt-get install ffmpeg");
 }
 
-VideoEncoder::VideoEncoder(const fs::path& path, int width, int height, double fps)
+VideoEncoder::VideoEncoder(const fs::path& path, int width, int height, double fps, bool transparent)
     : m_path(path), m_partial(path.string() + ".partial"), m_log(path.string() + ".log"), m_width(width),
       m_height(height) {
-  require_video(path);
+  require_video(path, transparent);
   const VideoFormat& format = *format_of(path);
   // ffmpeg opens the file only once frames arrive: whether it can be written
   // is found out here, before anything is simulated, as for the other outputs.
@@ -89,7 +97,7 @@ VideoEncoder::VideoEncoder(const fs::path& path, int width, int height, double f
   std::signal(SIGPIPE, SIG_IGN);
   std::ostringstream command;
   command << shell_quote(find_ffmpeg().string()) << " -hide_banner -loglevel error -y -f rawvideo -pix_fmt rgba -s "
-          << width << "x" << height << " -framerate " << fps << " -i - " << format.codec << " -f " << format.muxer
+          << width << "x" << height << " -framerate " << fps << " -i - " << (transparent ? format.alpha_codec : format.codec) << " -f " << format.muxer
           << " " << shell_quote(m_partial.string()) << " 2> " << shell_quote(m_log.string());
   m_pipe = ::popen(command.str().c_str(), "w");
   if (!m_pipe) {

@@ -182,6 +182,29 @@ TEST(TurntableCommand, VideoAsMp4AndGif) {
   EXPECT_TRUE(fs::exists(dir / "frames" / "frame_0006.png"));
 }
 
+// Over a transparent background a GIF keeps the transparency (one palette
+// entry), and a video whose codec cannot hold it is refused before anything is written.
+TEST(TurntableCommand, ATransparentGifIsTransparentAndAnMp4IsRefused) {
+  const fs::path dir = scratch_dir("turntable_video_alpha");
+  const std::string command = "turntable " + bunny() + " --turn-frames 2 --resolution 64x48 --msaa 0 -q --background transparent";
+  const CommandResult gif = run_recoil(command + " --video " + shell_quote(dir / "t.gif") + " -o " + shell_quote(dir / "g"));
+  ASSERT_EQ(gif.exit_code, 0) << gif.err;
+  std::FILE* decoded = ::popen(("ffmpeg -v error -i " + shell_quote(dir / "t.gif") + " -vframes 1 -f rawvideo -pix_fmt rgba -")
+                                   .c_str(), "r");
+  ASSERT_NE(decoded, nullptr);
+  std::string rgba(64 * 48 * 4, '\0');
+  const size_t got = std::fread(rgba.data(), 1, rgba.size(), decoded);
+  ::pclose(decoded);
+  ASSERT_EQ(got, rgba.size());
+  int clear = 0;
+  for (size_t i = 3; i < rgba.size(); i += 4) clear += rgba[i] == 0;
+  EXPECT_GT(clear, 64 * 48 / 2);  // the bunny and its shadow cover less than half the frame
+  const CommandResult mp4 = run_recoil(command + " --video " + shell_quote(dir / "t.mp4") + " -o " + shell_quote(dir / "m"));
+  EXPECT_EQ(mp4.exit_code, 2);
+  EXPECT_NE(mp4.err.find("holds no transparency; name it .webm or .gif"), std::string::npos) << mp4.err;
+  EXPECT_FALSE(fs::exists(dir / "m"));
+}
+
 // Every 4th frame of a 30 fps turn plays at 7.5 fps, so the video runs in
 // real time rather than four times as fast.
 TEST(TurntableCommand, AVideoOfEveryNthFramePlaysInRealTime) {
