@@ -71,7 +71,8 @@ void add_up_option(CLI::App& command, UpAxis& up) {
       .add_option_function<std::string>(
           "--up", [&up](const std::string& text) { up = *parse_up_axis(text); },
           "The mesh file's up axis, turned onto world +Y (recoil is Y-up) before anything else; "
-          "CAD and 3D-print files (STL, OBJ, OFF, PLY) are often +Z. glTF is +Y by its specification. "
+          "CAD and 3D-print files (STL, OBJ, OFF, PLY) are often +Z, and Blender's own .blend files are +Z. glTF is +Y by "
+          "its specification. "
           "Default +Y")
       ->check(axis_check);
 }
