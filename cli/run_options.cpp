@@ -142,7 +142,7 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
     }
     std::cerr << " to " << job.output_dir.string();
     if (const RemovedFrames& gone = result.removed_frames; gone.count > 0)
-      std::cerr << ", removed " << gone.count << " left there by a longer run (" << gone.first
+      std::cerr << ", removed " << gone.count << " frames of another run (" << gone.first
                 << (gone.count > 1 ? " to " + gone.last : "") << ")";
     if (!warnings.empty()) std::cerr << "; warning: " << warnings;
     std::cerr << "\n";

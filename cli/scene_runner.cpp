@@ -55,8 +55,8 @@ std::string describe_failure(const sim::StepReport& r, int frame, const std::str
 
 // How far a deformable body's own weight alone strains it, resting on its
 // base: density * |g| * height / E, its height along gravity at rest. Told
-// when its elements invert, with what holds its shape; empty for a body that is
-// no deformable one.
+// when its elements invert and it is past a tenth, where a material stops
+// being stiff enough to keep its shape, with what holds it; empty otherwise.
 std::string self_weight_strain(const sim::World& world, const std::string& body, const Eigen::Vector3d& gravity) {
   for (int i = 0; i < world.num_deformable_bodies(); ++i) {
     const sim::DeformableBody& b = world.deformable_body(i);
@@ -64,6 +64,7 @@ std::string self_weight_strain(const sim::World& world, const std::string& body,
     const Eigen::VectorXd along = b.rest.nodes * (gravity / gravity.norm());
     const double height = along.maxCoeff() - along.minCoeff();
     const double strain = b.material.density * gravity.norm() * height / b.material.youngs_modulus;
+    if (strain < 0.1) return {};
     return "; its own weight alone strains it by about " + format_number("%.2g", 100.0 * strain) + " % (density " +
            format_number("%g", b.material.density) + " kg/m^3 x g x height " + format_number("%.3g", height) +
            " m / E " + format_number("%g", b.material.youngs_modulus) +

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
+#include <optional>
 
 #include <Eigen/Geometry>
 
@@ -199,16 +201,18 @@ void hold_back(const ContactProblem& problem, const std::vector<ContactTrack>& t
 // toward G(x) = (lambda, the aim's angle), the aim being the slip this
 // contact would have without its own friction, u + w_t mu lambda' slip (the
 // fixed point itself for an isolated contact), through `acceleration`
-// (lines 4-8). All move while one's law is off by more than epsilon_2,
-// measured as the KKT residual does (line 18); line 9's impulse -mu lambda'
-// slip is what the states then hold.
+// (lines 4-8). All move while one's G(x) - x, weighed as a velocity, is
+// above epsilon_2 (line 18): to first order the KKT residual's friction
+// error, and the step itself, so a contact the step cannot move (its slip
+// reversed, frozen) never keeps the solve restarting; line 9's impulse
+// -mu lambda' slip is what the states then hold.
 void update_kinetic_friction(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
                              const Eigen::VectorXd& y, int n, const std::vector<int>& changing, const Evaluation& e,
                              FrictionAcceleration& acceleration, std::vector<Proposal>& proposals) {
   std::vector<int> members;
   std::vector<double> x, g, weights;
   const Eigen::VectorXd dv = y.head(n);
-  double worst = 0.0;  // m/s: the largest law error among the members
+  double worst = 0.0;  // m/s: the largest weighed entry of G(x) - x
   for (size_t k = 0; k < problem.states.size(); ++k) {
     const ContactState& s = problem.states[k];
     const ContactRows& rows = problem.rows[k];
@@ -224,8 +228,9 @@ void update_kinetic_friction(const ContactProblem& problem, const std::vector<Co
     x.insert(x.end(), {s.lambda_kinetic, std::atan2(s.slip.y(), s.slip.x())});
     g.insert(g.end(), {lambda, std::atan2(aim.y(), aim.x())});
     weights.insert(weights.end(), {rows.mu_kinetic * w_t, rows.mu_kinetic * w_t * s.lambda_kinetic});
-    worst = std::max({worst, rows.mu_kinetic * w_t * std::abs(lambda - s.lambda_kinetic),
-                      slip_direction_error(rows.mu_kinetic * w_t * s.lambda_kinetic, u, s.slip)});
+    const double turn = std::remainder(g.back() - x.back(), 2.0 * std::numbers::pi);
+    worst = std::max({worst, weights[weights.size() - 2] * std::abs(lambda - s.lambda_kinetic),
+                      weights.back() * std::abs(turn)});
   }
   if (members.empty() || !(worst > e.eps2)) return;
   const auto as_vector = [](const std::vector<double>& v) {
@@ -259,7 +264,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
   const Evaluation e{settings.policy, settings.constraint_tolerance, converged};
   const Eigen::VectorXd dv = y.head(n);
-  std::vector<Proposal> proposals;  // only the contacts that propose a change, in ascending order
+  std::vector<Proposal> proposals;  // the contacts that propose a change: per-contact ones in ascending order, then Algorithm 3's
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
     const ContactState& s = problem.states[static_cast<size_t>(k)];
@@ -287,9 +292,9 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
     if (p.accept) proposals.push_back(p);
   }
   hold_back(problem, tracks, P, e, proposals);
-  FrictionAcceleration fresh;  // for an evaluation that keeps no pairs
   if (converged) {
-    if (acceleration == nullptr) acceleration = &fresh;
+    std::optional<FrictionAcceleration> fresh;  // for an evaluation that keeps no pairs
+    if (acceleration == nullptr) acceleration = &fresh.emplace();
     std::vector<int> changing;  // ascending, as the proposals are
     for (const Proposal& p : proposals)
       if (p.accept && p.mode_change) changing.push_back(p.contact);

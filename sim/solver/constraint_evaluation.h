@@ -32,7 +32,7 @@ struct ContactTrack {
 // contacts changed, mode changes and friction updates apart.
 struct EvaluationChanges {
   int mode_changes = 0;      // contacts switched on or off, or between sticking and sliding
-  int friction_updates = 0;  // sliding contacts whose lambda' or slip direction moved, mode kept
+  int friction_updates = 0;  // sliding contacts given a new lambda' or slip direction, mode kept
   int total() const { return mode_changes + friction_updates; }
 };
 // A converged evaluation moves the sliding contacts' lambda' and slip

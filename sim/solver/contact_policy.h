@@ -4,12 +4,11 @@
 // place: each field is a runtime setting
 // with its unit and the reason it exists, and
 // docs/decisions/008-contact-evaluation-rules.md gives the measurements
-// behind each value. Velocity steps are in epsilon_2 (the solver's
-// constraint_tolerance, m/s), angles in rad; shares and cosines are plain
-// numbers.
+// behind each value. Shares and cosines are plain numbers.
 // Two rules have no number: sticking/sliding changes and Algorithm 3 wait
 // for a converged evaluation (a half-converged iterate cycled), and a
-// contact past max_flips (ContactSolverSettings) is frozen active.
+// contact past max_flips (ContactSolverSettings) is frozen active. Algorithm
+// 3's extrapolation keeps its own depth (FrictionAcceleration::kDepth).
 
 namespace recoil::sim {
 

@@ -9,7 +9,7 @@
 namespace recoil::sim {
 namespace {
 
-// Angle differences into (-pi, pi]: entries 2i+1 are angles.
+// Angle differences into [-pi, pi]: entries 2i+1 are angles.
 void wrap_angles(Eigen::VectorXd& v) {
   for (Eigen::Index i = 1; i < v.size(); i += 2) v[i] = std::remainder(v[i], 2.0 * std::numbers::pi);
 }
@@ -46,7 +46,9 @@ Eigen::VectorXd FrictionAcceleration::next(const std::vector<int>& members, cons
   if (columns == 0) return x + mixing * f;
   Eigen::MatrixXd dF(f.size(), columns), dX(x.size(), columns);
   for (int j = 0; j < columns; ++j) {
-    dF.col(j) = m_f[static_cast<size_t>(j + 1)] - m_f[static_cast<size_t>(j)];
+    Eigen::VectorXd df = m_f[static_cast<size_t>(j + 1)] - m_f[static_cast<size_t>(j)];
+    wrap_angles(df);
+    dF.col(j) = df;
     Eigen::VectorXd dx = m_x[static_cast<size_t>(j + 1)] - m_x[static_cast<size_t>(j)];
     wrap_angles(dx);
     dX.col(j) = dx;

@@ -214,7 +214,7 @@ TEST(RunCommand, ARerunRemovesTheFramesOfALongerRunAndSaysSo) {
   const CommandResult r = run_recoil("run " + shell_quote(scene) + " --frames 1-2 --resolution 32x32 --msaa 0 -o " +
                                      shell_quote(dir));
   ASSERT_EQ(r.exit_code, 0) << r.err;
-  EXPECT_NE(r.err.find("removed 2 left there by a longer run (frame_00003.png to frame_9999.png)"), std::string::npos)
+  EXPECT_NE(r.err.find("removed 2 frames of another run (frame_00003.png to frame_9999.png)"), std::string::npos)
       << r.err;
   for (const char* gone : {"frame_9999.png", "frame_00003.png"}) EXPECT_FALSE(fs::exists(dir / gone)) << gone;
   for (const char* kept : {"frame_0001.png", "frame_0002.png", "frame_0009.png", "frame_12.png", "frame_notes.txt",

@@ -234,7 +234,7 @@ TEST(ContactValidation, RollersPassTheBlockThrough) {
   // At resolution 5 cr carried the block up round a roller (centre at
   // y = +0.068 m after 1 s, KKT residuals up to 12 m/s) until a solved
   // iterate that meets every law stopped changing states (cr_solver.cpp)
-  // and the slip direction took secant steps (constraint_evaluation.h).
+  // and the slip directions converged faster (friction_acceleration.h).
   for (int resolution : {3, 5}) {
     const double dt = 0.005;
     World world(rollers(6.0, resolution, dt));
