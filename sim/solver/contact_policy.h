@@ -20,7 +20,7 @@ struct ContactPolicy {
   double rest_gap_fraction = 0.1;
   // Share of Algorithm 3's step, G(x) - x, that one evaluation takes
   // (friction_acceleration.h): the whole step swings coupled contacts
-  // period-2 (the bunny-drop demo: 21 capped steps against 4 at a half).
+  // period-2 (the bunny-drop demo: 21 capped steps against 3 at a half).
   double friction_mixing = 0.5;
   // -cosine past which a sliding contact's slip counts as reversed and it
   // sticks (0.5: 120 degrees); a slip turned less is a direction to follow.
