@@ -141,6 +141,7 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
       if (result.frames_skipped > 0) std::cerr << " (" << result.frames_skipped << " already on disk)";
     }
     std::cerr << " to " << job.output_dir.string();
+    if (job.render && !job.video.empty()) std::cerr << " and " << job.video.string();
     if (const RemovedFrames& gone = result.removed_frames; gone.count > 0)
       std::cerr << ", removed " << gone.count << " frames of another run (" << gone.first
                 << (gone.count > 1 ? " to " + gone.last : "") << ")";

@@ -188,8 +188,9 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       renderer = std::make_unique<render::Renderer>(settings);
       report.set_gl(render::gl_backend_name(renderer->backend()), renderer->gl_renderer());
     } catch (const render::RefusedSetting& e) {
-      // A resolution or an msaa count the renderer or its driver cannot draw.
-      throw Error(e.kind(), scene.label() + ": /render/" + e.field() + ": " + e.what());
+      // A resolution or an msaa count the renderer or its driver cannot draw,
+      // from the scene file or from the option of the same name.
+      throw Error(e.kind(), scene.label() + ": /render/" + e.field() + " (--" + e.field() + "): " + e.what());
     }
     const render::FrameWriterSize size = render::default_frame_writer_size();
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), size.threads, size.capacity);

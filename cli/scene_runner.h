@@ -36,7 +36,7 @@ std::string describe_warnings(const SolveQuality& quality);
 struct RunResult {
   int frames_written = 0;
   int frames_skipped = 0;   // --resume: already on disk
-  RemovedFrames removed_frames;  // an earlier, longer run's frames, deleted from the folder
+  RemovedFrames removed_frames;  // another run's frames, deleted from the folder (output_dir.h)
   long steps = 0;
   bool failed = false;
   int interrupted_by = 0;   // SIGINT or SIGTERM that stopped the run early; 0: none

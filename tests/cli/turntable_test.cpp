@@ -77,12 +77,12 @@ TEST(TurntableCommand, BadInputIsExit2AndUnwritableOutputIsExit4) {
   EXPECT_NE(color.err.find("--color"), std::string::npos) << color.err;
   EXPECT_EQ(run_recoil("turntable " + bunny() + " --msaa 3").exit_code, 2);
   // A count the driver cannot draw exactly (llvmpipe has 4 samples only) is
-  // refused naming the scene's field; a driver with 2 samples draws it.
+  // refused naming the scene's field and the option; a driver with 2 samples draws it.
   const CommandResult two = run_recoil("turntable " + bunny() + " --msaa 2 --turn-frames 1 --resolution 32x32 -q -o " +
                                        shell_quote(dir / "two"));
   if (two.exit_code != 0) {
     EXPECT_EQ(two.exit_code, 2) << two.err;
-    EXPECT_NE(two.err.find(": /render/msaa: render msaa 2"), std::string::npos) << two.err;
+    EXPECT_NE(two.err.find(": /render/msaa (--msaa): render msaa 2"), std::string::npos) << two.err;
   }
   std::ofstream(dir / "a_file") << "x";
   const CommandResult blocked =
@@ -210,9 +210,12 @@ TEST(TurntableCommand, ATransparentGifIsTransparentAndAnMp4IsRefused) {
 TEST(TurntableCommand, AVideoOfEveryNthFramePlaysInRealTime) {
   const fs::path dir = scratch_dir("turntable_video_stride");
   const fs::path video = dir / "turn.mp4";
-  const CommandResult r = run_recoil("turntable " + bunny() + " --turn-frames 24 --frames 1-24:4 --resolution 64x48 --msaa 0 -q --video " +
+  const CommandResult r = run_recoil("turntable " + bunny() + " --turn-frames 24 --frames 1-24:4 --resolution 64x48 --msaa 0 --video " +
                                      shell_quote(video) + " -o " + shell_quote(dir / "frames"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
+  // The summary names the video beside the frames.
+  EXPECT_NE(r.err.find(", wrote 6 frames to " + (dir / "frames").string() + " and " + video.string()), std::string::npos)
+      << r.err;
   std::FILE* probe = ::popen(("ffprobe -v error -select_streams v:0 -show_entries stream=r_frame_rate,nb_frames -of csv=p=0 " +
                               shell_quote(video)).c_str(), "r");
   ASSERT_NE(probe, nullptr);
