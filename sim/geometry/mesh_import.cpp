@@ -261,7 +261,8 @@ TriMesh import_surface(const fs::path& path, bool* turned_outward) {
   if (clean.empty()) throw bad_input(path.string() + ": mesh has no triangles");
   // A closed surface wound inward bounds the same solid turned inside out:
   // turned over, its normals, back faces and mass read as that solid's.
-  const bool inward = compute_mesh_stats(clean).watertight && enclosed_volume(clean) < 0.0;
+  const MeshStats stats = compute_mesh_stats(clean);  // its volume is the signed enclosed one
+  const bool inward = stats.watertight && stats.volume < 0.0;
   if (inward) flip_winding(clean);
   if (turned_outward != nullptr) *turned_outward = inward;
   return clean;

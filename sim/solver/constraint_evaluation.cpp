@@ -206,12 +206,13 @@ void hold_back(const ContactProblem& problem, const std::vector<ContactTrack>& t
 // error, and the step itself, so a contact the step cannot move (its slip
 // reversed, frozen) never keeps the solve restarting; line 9's impulse
 // -mu lambda' slip is what the states then hold.
+// `tangential` holds u per contact, as Algorithm 2 read it for the active ones.
 void update_kinetic_friction(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
-                             const Eigen::VectorXd& y, int n, const std::vector<int>& changing, const Evaluation& e,
-                             FrictionAcceleration& acceleration, std::vector<Proposal>& proposals) {
+                             const Eigen::VectorXd& y, int n, const std::vector<Eigen::Vector2d>& tangential,
+                             const std::vector<int>& changing, const Evaluation& e, FrictionAcceleration& acceleration,
+                             std::vector<Proposal>& proposals) {
   std::vector<int> members;
   std::vector<double> x, g, weights;
-  const Eigen::VectorXd dv = y.head(n);
   double worst = 0.0;  // m/s: the largest weighed entry of G(x) - x
   for (size_t k = 0; k < problem.states.size(); ++k) {
     const ContactState& s = problem.states[k];
@@ -220,7 +221,7 @@ void update_kinetic_friction(const ContactProblem& problem, const std::vector<Co
         rows.nodes.empty() || std::binary_search(changing.begin(), changing.end(), static_cast<int>(k)))
       continue;
     const double w_t = std::max(tracks[k].w[1], tracks[k].w[2]);
-    const Eigen::Vector2d u = rows_times(rows, dv).tail<2>() - rows.rhs_tangent;
+    const Eigen::Vector2d& u = tangential[k];
     const Eigen::Vector2d target = u + w_t * rows.mu_kinetic * s.lambda_kinetic * s.slip;
     const Eigen::Vector2d aim = target.squaredNorm() > 0.0 ? target : s.slip;
     const double lambda = std::max(y[n + 3 * static_cast<Eigen::Index>(k)], 0.0);
@@ -265,6 +266,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
   const Evaluation e{settings.policy, settings.constraint_tolerance, converged};
   const Eigen::VectorXd dv = y.head(n);
   std::vector<Proposal> proposals;  // the contacts that propose a change: per-contact ones in ascending order, then Algorithm 3's
+  std::vector<Eigen::Vector2d> tangential(static_cast<size_t>(m), Eigen::Vector2d::Zero());  // u of the active contacts, m/s
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
     const ContactState& s = problem.states[static_cast<size_t>(k)];
@@ -286,6 +288,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
       const double slack = jdv[0] + yield[0] - rows.rhs_normal;
       Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
       if (s.mode == ContactMode::sticking) u += yield.tail<2>();
+      tangential[static_cast<size_t>(k)] = u;
       p = evaluate_active(rows, s, track, f, slack, u, track.flips >= settings.max_flips, e);
     }
     p.contact = k;
@@ -300,7 +303,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
       if (p.accept && p.mode_change) changing.push_back(p.contact);
     // A change of modes changes the system that G(x) solved: the remembered pairs no longer hold.
     if (!changing.empty()) acceleration->reset();
-    update_kinetic_friction(problem, tracks, y, n, changing, e, *acceleration, proposals);
+    update_kinetic_friction(problem, tracks, y, n, tangential, changing, e, *acceleration, proposals);
   }
   EvaluationChanges changed;
   for (const Proposal& p : proposals) {
