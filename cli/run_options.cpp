@@ -131,6 +131,7 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
     const nlohmann::json line = {{"event", "summary"},       {"scene", job.scene.name},
                                  {"steps", result.steps},     {"frames_written", result.frames_written},
                                  {"frames_skipped", result.frames_skipped},
+                                 {"resume_mismatch", result.resume_mismatch},
                                  {"frames_removed", result.removed_frames.count}, {"output", job.output_dir.string()},
                                  {"warnings", warnings}};
     std::cerr << line.dump() << "\n";
@@ -139,6 +140,8 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
     if (job.render) {
       std::cerr << ", wrote " << result.frames_written << (result.frames_written == 1 ? " frame" : " frames");
       if (result.frames_skipped > 0) std::cerr << " (" << result.frames_skipped << " already on disk)";
+      if (!result.resume_mismatch.empty())
+        std::cerr << " (--resume drew every frame again: " << result.resume_mismatch << ")";
     }
     std::cerr << " to " << job.output_dir.string();
     if (job.render && !job.video.empty()) std::cerr << " and " << job.video.string();

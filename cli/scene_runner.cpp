@@ -151,6 +151,19 @@ double video_fps(const std::vector<int>& selected, double fps) {
   return fps / stride;
 }
 
+// Where the scene DIR/scene.json describes, written by the run that drew the
+// frames beside it, differs from `resolved`: a JSON pointer ("/bodies/0/material"),
+// "" when they are the same scene, or why no comparison was possible.
+std::string difference_from_saved_scene(const fs::path& saved, const nlohmann::json& resolved) {
+  std::error_code ec;
+  if (!fs::is_regular_file(saved, ec)) return "no scene.json beside them";
+  const std::vector<std::uint8_t> bytes = read_file_bytes(saved);
+  const nlohmann::json before = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
+  if (before.is_discarded()) return "scene.json beside them is not JSON";
+  const nlohmann::json patch = nlohmann::json::diff(before, resolved);
+  return patch.empty() ? "" : "scene.json differs at " + patch[0].value("path", std::string("/"));
+}
+
 RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const auto start = Clock::now();
   const SceneDesc& scene = job.scene;
@@ -159,6 +172,10 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const double fps = scene.render.fps, dt = scene.world.dt;
   const std::vector<int> selected = job.frames.empty() ? all_frames(scene.frame_count()) : job.frames;
   const int last_frame = selected.back();
+  if (last_frame > scene.frame_count())
+    throw bad_input(scene.label() + ": --frames: frame " + std::to_string(last_frame) + " is past the last, " +
+                    std::to_string(scene.frame_count()) + " (simulation.duration " + format_number("%g", scene.duration) +
+                    " s at render.fps " + format_number("%g", fps) + "); lengthen the duration to draw it (drop: --seconds)");
   // Frame names keep their width whatever subset is rendered.
   const int name_count = std::max(scene.frame_count(), last_frame);
   if (!job.video.empty()) {
@@ -196,6 +213,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), size.threads, size.capacity);
   }
 
+  RunResult result;
   // Outputs only once the world, the renderer and the video's file exist: a
   // refused scene or video path writes nothing.
   if (job.render && !job.video.empty())
@@ -203,7 +221,10 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
                                           settings.transparent_background);
   ensure_output_dir(job.output_dir);
   remove_stale_temporaries(job.output_dir);
-  write_text_atomically(job.output_dir / "scene.json", resolved_scene(scene).dump(2) + "\n");
+  const nlohmann::json resolved = resolved_scene(scene);
+  // Frames on disk are kept only when the run that drew them had this scene.
+  if (job.resume) result.resume_mismatch = difference_from_saved_scene(job.output_dir / "scene.json", resolved);
+  write_text_atomically(job.output_dir / "scene.json", resolved.dump(2) + "\n");
   const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
   if (stats_path.has_parent_path()) ensure_output_dir(stats_path.parent_path());
   errno = 0;
@@ -212,7 +233,6 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
 
   const InterruptScope interrupts;
   const auto run_start = Clock::now();
-  RunResult result;
   // Only a moving body's solid comes from its winding number; a static or kinematic one is its surface.
   for (const SceneBody& body : scene.bodies) {
     if (body.open_mesh && (body.kind == sim::BodyKind::deformable || body.kind == sim::BodyKind::rigid))
@@ -301,7 +321,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     if (job.render) {
       const fs::path path = job.output_dir / frame_file_name(k, name_count);
       // Only a whole frame of this size is kept; a cut or foreign file is drawn again.
-      if (job.resume && render::is_whole_png(path, settings.width, settings.height)) {
+      if (job.resume && result.resume_mismatch.empty() && render::is_whole_png(path, settings.width, settings.height)) {
         ++result.frames_skipped;
         if (video) video->add(render::read_png(path));
       } else {

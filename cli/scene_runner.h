@@ -36,6 +36,8 @@ std::string describe_warnings(const SolveQuality& quality);
 struct RunResult {
   int frames_written = 0;
   int frames_skipped = 0;   // --resume: already on disk
+  // --resume found frames of another scene (why, scene_runner.cpp): all drawn again; empty otherwise.
+  std::string resume_mismatch;
   RemovedFrames removed_frames;  // another run's frames, deleted from the folder (output_dir.h)
   long steps = 0;
   bool failed = false;

@@ -68,6 +68,12 @@ void require_video(const fs::path& path, bool transparent) {
   if (!format)
     throw bad_input("--video: cannot write '" + path.filename().string() +
                     "'; name the file .mp4, .mov, .mkv, .webm or .gif");
+  // The video is encoded beside the path and renamed over it, which would
+  // turn a device or a FIFO into a plain file.
+  std::error_code ec;
+  const fs::file_status status = fs::status(path, ec);
+  if (fs::exists(status) && !fs::is_regular_file(status))
+    throw bad_input("--video " + path.string() + ": not a regular file (a folder, device or FIFO); name a file");
   if (transparent && !format->alpha_codec)
     throw bad_input("--video: '" + path.filename().string() +
                     "' (H.264) holds no transparency; name it .webm or .gif, or give --background a colour");

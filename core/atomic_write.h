@@ -3,8 +3,11 @@
 // flushed to disk (fsync) and only then renamed over TARGET, so a crash, a
 // kill or a full disk leaves the old file or the new one, never a mixture
 // (at worst a stray temporary, which `run --resume` removes). Shared by the
-// PNG frames and the CLI's JSON and HTML outputs.
+// PNG frames and the CLI's JSON and HTML outputs. A target that exists and is
+// not a regular file (a device, a FIFO, /dev/stdout) is written through
+// instead: renaming over it would replace the device node with a file.
 #include <fcntl.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 #include <atomic>
@@ -24,9 +27,29 @@ inline std::string errno_message(int saved_errno) {
   return saved_errno != 0 ? std::generic_category().message(saved_errno) : "unknown cause (no errno)";
 }
 
+// Writes `size` bytes at `data` into the existing non-regular file `target`;
+// throws Error(output_failed) naming it and the system's reason.
+inline void write_through(const std::filesystem::path& target, const void* data, size_t size) {
+  const auto fail = [&](const char* step, int saved_errno) {
+    return output_error("cannot write " + target.string() + " (" + step + "): " + errno_message(saved_errno));
+  };
+  const int fd = ::open(target.c_str(), O_WRONLY | O_CLOEXEC);
+  if (fd < 0) throw fail("opening", errno);
+  if (const int saved = write_fully(fd, data, size); saved != 0) {
+    ::close(fd);
+    throw fail("writing", saved);
+  }
+  if (::close(fd) != 0) throw fail("closing", errno);
+}
+
 // Writes `size` bytes at `data` as `target`, atomically and durably; throws
 // Error(output_failed) naming `target` and the system's reason.
 inline void replace_file(const std::filesystem::path& target, const void* data, size_t size) {
+  struct stat existing {};
+  if (::stat(target.c_str(), &existing) == 0 && !S_ISREG(existing.st_mode) && !S_ISDIR(existing.st_mode)) {
+    write_through(target, data, size);
+    return;
+  }
   static std::atomic<unsigned> counter{0};
   const std::string temporary =
       target.string() + ".tmp-" + std::to_string(::getpid()) + "-" + std::to_string(counter++);

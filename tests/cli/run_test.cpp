@@ -201,6 +201,40 @@ TEST(RunCommand, ResumeSkipsFramesAlreadyOnDisk) {
   EXPECT_EQ(read_stats(dir / "stats.jsonl").size(), 3u);  // the simulation still ran every frame
 }
 
+// Frames on disk belong to the scene in the scene.json beside them: a resume
+// with another scene (here, another gravity) draws every frame again and
+// says where the scenes differ, instead of mixing two simulations.
+TEST(RunCommand, ResumeWithAnotherSceneDrawsEveryFrameAgain) {
+  const fs::path dir = scratch_dir("run_resume_other_scene");
+  json scene = json::parse(file_bytes(source_path("assets/scenes/validation/rest.json")));
+  const fs::path path = dir / "rest.json", out = dir / "out";
+  const std::string command = "run " + shell_quote(path) + " --frames 1-3 --resolution 32x32 --msaa 0 -o " + shell_quote(out);
+  std::ofstream(path) << scene.dump();
+  ASSERT_EQ(run_recoil(command).exit_code, 0);
+  scene["simulation"]["gravity"] = json::array({0.0, -1.62, 0.0});
+  std::ofstream(path, std::ios::trunc) << scene.dump();
+  const CommandResult r = run_recoil(command + " --resume");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.err.find("--resume drew every frame again: scene.json differs at /simulation/gravity"), std::string::npos)
+      << r.err;
+  const json run = json::parse(file_bytes(out / "run.json"));
+  EXPECT_EQ(run["frames"]["written"], 3);
+  EXPECT_EQ(run["frames"]["skipped"], 0);
+}
+
+// A frame past the scene's duration is refused before anything is made:
+// drawing it would simulate beyond the duration that scene.json records.
+TEST(RunCommand, FramesPastTheDurationAreRefused) {
+  const fs::path dir = scratch_dir("run_frames_past");
+  const fs::path scene = source_path("assets/scenes/validation/rest.json");  // 4 s at 30 fps: 121 frames
+  const CommandResult r = run_recoil("run " + shell_quote(scene) + " --frames 120-200 --no-render -o " + shell_quote(dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--frames: frame 200 is past the last, 121 (simulation.duration 4 s at render.fps 30)"),
+            std::string::npos)
+      << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 // A rerun into a folder that a longer run wrote leaves one run's frames:
 // those past its frame count (or of another name width) go, the ones within
 // it stay even when not selected, and files that are no frame stay.
