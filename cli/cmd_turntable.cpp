@@ -54,7 +54,7 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
   cmd->footer(
       "The mesh is stood on a ground plane, its --up axis (default +Y) turned to world +Y, and the\n"
       "camera circles it once in --turn-frames frames; frames are written as DIR/frame_0001.png, ...\n"
-      "--frames picks which of them to write, as in `run`; frames past the turn go on turning.\n"
+      "--frames picks which of them to write, as in `run` (--turn-frames makes the turn longer).\n"
       "With --settle the mesh is released just above where it stands and simulated (not drawn) until\n"
       "it rests, at most --settle-seconds, so the physics picks its stable pose; the orbit then frames\n"
       "the resting mesh. Like `run`, it writes\n"

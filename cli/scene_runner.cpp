@@ -175,7 +175,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   if (last_frame > scene.frame_count())
     throw bad_input(scene.label() + ": --frames: frame " + std::to_string(last_frame) + " is past the last, " +
                     std::to_string(scene.frame_count()) + " (simulation.duration " + format_number("%g", scene.duration) +
-                    " s at render.fps " + format_number("%g", fps) + "); lengthen the duration to draw it (drop: --seconds)");
+                    " s at render.fps " + format_number("%g", fps) + "); lengthen the duration to draw it (drop: --seconds; turntable: --turn-frames)");
   // Frame names keep their width whatever subset is rendered.
   const int name_count = std::max(scene.frame_count(), last_frame);
   if (!job.video.empty()) {
@@ -327,7 +327,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       } else {
         const auto render_start = Clock::now();
         const render::RenderScene& drawn = view->update(world->surfaces());
-        // An orbit spaces the scene's own frames round the turn; frames past them go on turning.
+        // An orbit spaces the scene's own frames round the turn.
         renderer->render(drawn, view->camera(k, scene.frame_count()), image);
         times.render = ms_since(render_start);
         if (video) video->add(image);

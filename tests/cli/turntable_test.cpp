@@ -117,11 +117,12 @@ TEST(TurntableCommand, FramesSelectsAsInRunAndTheSceneReruns) {
       run_recoil("run " + shell_quote(dir / "t.json") + " --frames 5 -q -o " + shell_quote(dir / "d"));
   ASSERT_EQ(from_saved.exit_code, 0) << from_saved.err;
   EXPECT_EQ(file_bytes(dir / "a" / "frame_0005.png"), file_bytes(dir / "d" / "frame_0005.png"));
-  // Frames past the turn go on turning: they do not respace the turn's own frames.
+  // A frame past the turn is refused, as in run, naming the option that makes the turn longer.
   const CommandResult past = run_recoil("turntable " + bunny() + " --turn-frames 8 --frames 5,12" + size + " -o " +
                                         shell_quote(dir / "e"));
-  ASSERT_EQ(past.exit_code, 0) << past.err;
-  EXPECT_EQ(file_bytes(dir / "a" / "frame_0005.png"), file_bytes(dir / "e" / "frame_0005.png"));
+  EXPECT_EQ(past.exit_code, 2);
+  EXPECT_NE(past.err.find("--frames: frame 12 is past the last, 8"), std::string::npos) << past.err;
+  EXPECT_NE(past.err.find("turntable: --turn-frames"), std::string::npos) << past.err;
   const CommandResult bad = run_recoil("turntable " + bunny() + " --frames 0" + size + " -o " + shell_quote(dir / "f"));
   EXPECT_EQ(bad.exit_code, 2);
   EXPECT_NE(bad.err.find("--frames"), std::string::npos) << bad.err;
