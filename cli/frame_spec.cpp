@@ -10,12 +10,14 @@
 namespace recoil::cli {
 namespace {
 
-// A positive frame number; whole text must be digits.
-int parse_frame(const std::string& text, const std::string& spec, const std::string& option) {
+// A positive frame number (or step); whole text must be digits. `below_one`
+// says what a 0 breaks.
+int parse_frame(const std::string& text, const std::string& spec, const std::string& option,
+                const char* below_one = "frame numbers start at 1") {
   if (text.empty() || text.size() > 9 || !std::all_of(text.begin(), text.end(), [](char c) { return std::isdigit(static_cast<unsigned char>(c)); }))
     throw bad_input(option + ": expected frame numbers like 1-100, 1-100:5 or 1,3,7-9, got '" + spec + "'");
   const int n = std::stoi(text);
-  if (n < 1) throw bad_input(option + ": frame numbers start at 1, got '" + spec + "'");
+  if (n < 1) throw bad_input(option + ": " + below_one + ", got '" + spec + "'");
   if (n > kMaxFrames) throw bad_input(option + ": frame numbers go up to " + std::to_string(kMaxFrames) + ", got '" + spec + "'");
   return n;
 }
@@ -32,7 +34,7 @@ std::vector<int> parse_frame_spec(const std::string& spec, const std::string& op
     int step = 1;
     const size_t colon = part.find(':');
     if (colon != std::string::npos) {
-      step = parse_frame(part.substr(colon + 1), spec, option);
+      step = parse_frame(part.substr(colon + 1), spec, option, "the step (:N) is at least 1");
       part = part.substr(0, colon);
     }
     const size_t dash = part.find('-');

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <set>
 #include <sstream>
 
 #include "core/error.h"
@@ -63,6 +64,8 @@ class PointerTracker : public nlohmann::json_sax<nlohmann::json> {
     return out.empty() ? "/" : out;
   }
   size_t error_offset() const { return m_error_offset; }
+  // The pointer of the first key given twice in one object; empty when none is.
+  const std::string& duplicate() const { return m_duplicate; }
 
   bool null() override { return value(); }
   bool boolean(bool) override { return value(); }
@@ -73,8 +76,14 @@ class PointerTracker : public nlohmann::json_sax<nlohmann::json> {
   bool binary(binary_t&) override { return value(); }
   bool start_object(std::size_t) override { return open(false); }
   bool key(string_t& name) override {
-    m_levels.back().key = name;
-    m_levels.back().has_key = true;
+    Level& level = m_levels.back();
+    level.key = name;
+    level.has_key = true;
+    // A key given twice stops the parse: the parser keeps the last silently.
+    if (!level.keys.insert(name).second) {
+      m_duplicate = pointer();
+      return false;
+    }
     return true;
   }
   bool end_object() override { return close(); }
@@ -91,9 +100,10 @@ class PointerTracker : public nlohmann::json_sax<nlohmann::json> {
     size_t index = 0;
     bool has_key = false;
     std::string key;
+    std::set<std::string> keys;  // an object's keys so far
   };
   bool open(bool is_array) {
-    m_levels.push_back({is_array, 0, false, {}});
+    m_levels.push_back({is_array, 0, false, {}, {}});
     return true;
   }
   bool close() {
@@ -107,6 +117,7 @@ class PointerTracker : public nlohmann::json_sax<nlohmann::json> {
   }
   std::vector<Level> m_levels;
   size_t m_error_offset = 0;
+  std::string m_duplicate;
 };
 
 size_t edit_distance(std::string_view a, std::string_view b) {
@@ -130,7 +141,12 @@ size_t edit_distance(std::string_view a, std::string_view b) {
 
 nlohmann::json parse_json_text(const std::string& text, const std::string& file) {
   try {
-    return nlohmann::json::parse(text);
+    nlohmann::json document = nlohmann::json::parse(text);
+    PointerTracker tracker;
+    nlohmann::json::sax_parse(text, &tracker);
+    if (!tracker.duplicate().empty())
+      throw bad_input(file + ": " + tracker.duplicate() + ": given twice in one object; keep one");
+    return document;
   } catch (const nlohmann::json::out_of_range&) {
     // Only a number too large for a double is out of range while parsing.
     PointerTracker tracker;

@@ -17,7 +17,8 @@ namespace recoil::cli {
 
 // Parses `text` (the contents of `file`); syntax errors throw bad_input as
 // "FILE:LINE:COLUMN: syntax error: ...", and a number beyond double range as
-// "FILE: /POINTER: ..." naming the field it was given for.
+// "FILE: /POINTER: ..." naming the field it was given for, as is a key given
+// twice in one object (which the parser would otherwise take the last of).
 nlohmann::json parse_json_text(const std::string& text, const std::string& file);
 
 // [x, y, z] for scene files and stats.
@@ -44,6 +45,7 @@ class JsonCursor {
   // with a near-miss suggestion ("did you mean ...?").
   void expect_object(const std::vector<std::string>& allowed) const;
   bool is_number() const { return m_in->is_number(); }
+  bool is_array() const { return m_in->is_array(); }
   bool has(const std::string& key) const { return m_in->is_object() && m_in->contains(key); }
 
   // The member `key` (which must exist; fails "is required" otherwise).

@@ -93,6 +93,7 @@ sim::Transform parse_transform(const JsonCursor& c) {
     if (s.is_number()) {
       t.scale = Eigen::Vector3d::Constant(s.number_in(kScaleRange));
     } else {
+      if (!s.is_array()) s.type_error("a number or an array of 3 numbers");
       t.scale = s.vec3_in({-kScaleRange.hi, kScaleRange.hi});
       for (int k = 0; k < 3; ++k)
         if (!kScaleRange.contains(std::abs(t.scale[k])))
@@ -146,7 +147,10 @@ fs::path resolve_file(const JsonCursor& c, const fs::path& base_dir) {
   if (text.empty()) c.fail("empty file name");
   const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (base_dir / text).lexically_normal();
   std::error_code ec;
-  if (!fs::is_regular_file(path, ec)) c.fail("file not found: " + path.string());
+  const fs::file_status status = fs::status(path, ec);
+  if (!fs::exists(status)) c.fail("file not found: " + path.string());
+  if (fs::is_directory(status)) c.fail("a folder, not a file: " + path.string());
+  if (!fs::is_regular_file(status)) c.fail("not a regular file (a device, FIFO or socket): " + path.string());
   return path;
 }
 

@@ -132,6 +132,9 @@ ReaderAnswer read_with_assimp(const fs::path& path) {
   if (!scene || !scene->mRootNode) {
     std::string reason = importer.GetErrorString();
     if (reason.empty()) reason = "not a mesh file assimp can read";
+    // A point cloud fails assimp's validation as "Mesh  contains no faces".
+    if (reason.find("contains no faces") != std::string::npos)
+      reason = "it holds points or lines but no faces (a point cloud?); recoil needs a triangle surface";
     throw bad_input(path.string() + ": cannot read mesh: " + reason);
   }
   Gathered gathered;

@@ -141,6 +141,11 @@ TEST(FrameSpec, RangesStepsAndLists) {
   EXPECT_EQ(cli::parse_frame_spec("7-9,1,3,3"), (std::vector<int>{1, 3, 7, 8, 9}));
   for (const char* bad : {"", "0", "5-1", "a-b", "1,,2", "1-", "3:2", "1-10:0", "1,"})
     EXPECT_THROW(cli::parse_frame_spec(bad), Error) << bad;
+  try {
+    cli::parse_frame_spec("1-10:0");
+  } catch (const Error& e) {
+    EXPECT_NE(std::string(e.what()).find("the step (:N) is at least 1"), std::string::npos) << e.what();
+  }
 }
 
 struct BadScene {
@@ -172,6 +177,9 @@ TEST(SceneFile, BadSceneCorpusGivesExit2NamingFileAndPointer) {
       {"fps-zero.json", {"/render/fps: must be in [0.001, 1000], got 0"}},
       {"up-axis.json", {"/bodies/1/up: unknown up axis \"+W\"", "+X, -X, +Y, -Y, +Z or -Z"}},
       {"up-primitive.json", {"/bodies/1/up: only for mesh files"}},
+      {"duplicate-key.json", {"/bodies/1/material/density: given twice in one object"}},
+      {"mesh-folder.json", {"/bodies/1/mesh: a folder, not a file"}},
+      {"scale-type.json", {"/bodies/1/transform/scale: expected a number or an array of 3 numbers, got a boolean"}},
   };
   const fs::path out = scratch_dir("bad_scenes");
   for (const BadScene& bad : corpus) {

@@ -4,31 +4,22 @@
 // encoded beside its path and renamed into place, refuses one before
 // anything is simulated.
 #include <fcntl.h>
-#include <sys/stat.h>
 #include <unistd.h>
 
 #include <gtest/gtest.h>
 
 #include "tests/cli/box_mesh_file.h"
+#include "tests/hostile_files.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
 namespace fs = std::filesystem;
 
-namespace {
-
-fs::path make_fifo(const fs::path& path) {
-  fs::remove(path);
-  EXPECT_EQ(::mkfifo(path.c_str(), 0600), 0) << path;
-  return path;
-}
-
-}  // namespace
-
 TEST(SpecialFiles, ASavedSceneIsWrittenIntoAFifoAndTheFifoStays) {
   const fs::path dir = scratch_dir("special_files_save_scene");
   const fs::path box = write_box_off(dir / "box.off", Eigen::Vector3d(-0.1, -0.1, -0.1), Eigen::Vector3d(0.1, 0.1, 0.1));
-  const fs::path fifo = make_fifo(dir / "scene.json");
+  const fs::path fifo = dir / "scene.json";
+  make_fifo(fifo);
   // Open for reading first, without blocking, so that recoil's open for
   // writing finds a reader; the scene (a few KB) fits the pipe's buffer.
   const int reader = ::open(fifo.c_str(), O_RDONLY | O_NONBLOCK);
@@ -47,7 +38,8 @@ TEST(SpecialFiles, ASavedSceneIsWrittenIntoAFifoAndTheFifoStays) {
 TEST(SpecialFiles, AVideoPathThatIsAFifoIsRefusedBeforeTheRun) {
   const fs::path dir = scratch_dir("special_files_video");
   const fs::path box = write_box_off(dir / "box.off", Eigen::Vector3d(-0.1, -0.1, -0.1), Eigen::Vector3d(0.1, 0.1, 0.1));
-  const fs::path fifo = make_fifo(dir / "video.mp4");
+  const fs::path fifo = dir / "video.mp4";
+  make_fifo(fifo);
   const CommandResult r = run_recoil("drop " + shell_quote(box) + " --seconds 0.004 --resolution 32x32 -q -o " +
                                      shell_quote(dir / "out") + " --video " + shell_quote(fifo));
   EXPECT_EQ(r.exit_code, 2) << r.err;

@@ -71,6 +71,16 @@ TEST(MeshImport, FifoAndDeviceAreRefused) {
   expect_names(e2, "device");
 }
 
+// A point cloud is read by assimp, whose validation refuses it in its own
+// words ("Mesh  contains no faces"): the message says what the file lacks.
+TEST(MeshImport, APointCloudIsRefusedForItsMissingFaces) {
+  const fs::path dir = test::scratch_dir("mesh_import_points");
+  std::ofstream(dir / "points.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n";
+  const std::string e = test::bad_input_within_a_second([&] { import_surface(dir / "points.obj"); });
+  expect_names(e, (dir / "points.obj").string());
+  expect_names(e, "no faces (a point cloud?)");
+}
+
 // assimp allocates what PLY and OFF headers declare, and searches forever for a missing end_header.
 TEST(MeshImport, HeaderCountsBeyondFileSizeAreRefused) {
   const fs::path dir = test::scratch_dir("mesh_import_huge_count");
