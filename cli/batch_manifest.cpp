@@ -1,6 +1,7 @@
 // Manifest items become recoil command lines: each key is the long option of
 // the same name, and the whole line goes through the command's own CLI11
-// parser once here, so a bad value is reported before the first item runs.
+// parser and the parsers its run applies once here, so a bad value is
+// reported before the first item runs.
 #include "cli/batch_manifest.h"
 
 #include <algorithm>
@@ -8,6 +9,7 @@
 #include <nlohmann/json.hpp>
 #include <set>
 
+#include "cli/batch_check.h"
 #include "cli/commands.h"
 #include "cli/file_io.h"
 #include "cli/json_cursor.h"
@@ -21,6 +23,9 @@ namespace {
 
 // Keys that are not options of the command: what to run and what to call it.
 const std::vector<std::string> kItemKeys = {"scene", "mesh", "mode", "name"};
+
+// Options whose value is a file the item writes: like its inputs, relative to the manifest.
+const std::vector<std::string> kPathOptions = {"video", "stats", "save-scene"};
 
 // A folder name from a file stem: letters, digits, '.', '-' and '_' kept, anything else '_'.
 std::string folder_name(const std::string& stem) {
@@ -58,10 +63,7 @@ void check_with_command_parser(const std::vector<std::string>& args, const JsonC
   try {
     app.parse(line);
   } catch (const CLI::ParseError& e) {
-    const std::string message = e.what();
-    for (const auto& [key, value] : item.value().items())
-      if (message.find("--" + key) != std::string::npos) item.child(key).fail(message);
-    item.fail(message);
+    fail_at_option(item, e.what());
   }
 }
 
@@ -84,11 +86,16 @@ BatchItem to_item(const JsonCursor& entry, const nlohmann::json& defaults, const
       path.fail("expected a file name (a non-empty string)");
     return (base / path.value().get<std::string>()).lexically_normal().string();
   };
+  const auto input = [&](const JsonCursor& path) {
+    const std::string file = resolve(path);
+    check_input_file(path, file);
+    return file;
+  };
   if (source.value().is_array() && has_mesh) {
-    for (const JsonCursor& mesh : source.elements()) inputs.push_back(resolve(mesh));
+    for (const JsonCursor& mesh : source.elements()) inputs.push_back(input(mesh));
     if (inputs.empty()) source.fail("expected at least one mesh file");
   } else {
-    inputs.push_back(resolve(source));
+    inputs.push_back(input(source));
   }
   out.mode = has_scene ? "run" : "turntable";
   if (merged.contains("mode")) {
@@ -141,13 +148,16 @@ BatchItem to_item(const JsonCursor& entry, const nlohmann::json& defaults, const
     }
     if (value.is_boolean()) field.fail("--" + key + " takes a value, not " + value.dump());
     out.args.push_back("--" + key);
-    if (value.is_array()) {
+    if (std::find(kPathOptions.begin(), kPathOptions.end(), key) != kPathOptions.end()) {
+      out.args.push_back(resolve(field));
+    } else if (value.is_array()) {
       for (const JsonCursor& element : field.elements()) out.args.push_back(option_value(element));
     } else {
       out.args.push_back(option_value(field));
     }
   }
   check_with_command_parser(out.args, item);
+  check_option_values(out.args, item);
   return out;
 }
 

@@ -1,5 +1,5 @@
 // `recoil batch` end to end: a folder of real meshes from assimp-testmodels,
-// restarts (after a kill -9 too), shards, manifest errors and the contact sheet.
+// restarts (after a kill -9 too), shards, manifest errors, item paths and the contact sheet.
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -295,6 +295,86 @@ TEST(BatchCommand, ManifestErrorsNameTheItemAndTheFieldBeforeAnythingRuns) {
   EXPECT_NE(e.find("/0:"), std::string::npos) << e;
   e = error_for(json::object({{"mesh", cube}}));
   EXPECT_NE(e.find("JSON list"), std::string::npos) << e;
+}
+
+// Items that only their run would refuse (a missing file, a value the command
+// line accepts as text) are refused up front too, by batch and by --list alike.
+TEST(BatchCommand, EveryItemIsCheckedAsItsRunWouldBeBeforeTheFirstRuns) {
+  const fs::path dir = scratch_dir("batch_item_values");
+  fs::create_directories(dir / "m/folder");
+  fs::copy_file(kModels / "OFF/Cube.off", dir / "m/cube.off");
+  const json ok = {{"mesh", "cube.off"}, {"mode", "turntable"}, {"frames", 1}, {"resolution", "64x48"}};
+  // The error of a manifest of `ok` then `bad`, which both batch and --list refuse.
+  const auto error_for = [&](const json& bad) {
+    write_text(dir / "m/m.json", json::array({ok, bad}).dump());
+    const std::string base = "batch " + shell_quote(dir / "m/m.json") + " -o " + shell_quote(dir / "out");
+    const CommandResult listed = run_recoil(base + " --list");
+    EXPECT_EQ(listed.exit_code, 2) << bad << "\n" << listed.out;
+    const CommandResult r = run_recoil(base);
+    EXPECT_EQ(r.exit_code, 2) << bad;
+    EXPECT_FALSE(fs::exists(dir / "out")) << bad << ": an item ran";
+    EXPECT_EQ(listed.err, r.err) << bad;
+    fs::remove_all(dir / "out");
+    return r.err;
+  };
+  const auto expect_error = [&](const json& bad, const std::string& field, const std::string& why) {
+    const std::string e = error_for(bad);
+    EXPECT_NE(e.find("m.json: " + field + ": " + why), std::string::npos) << bad << ": " << e;
+    EXPECT_EQ(e.find("--"), std::string::npos) << bad << ": names the option, not the field: " << e;
+  };
+  expect_error({{"mesh", "nope.obj"}}, "/1/mesh", "file not found: ");
+  expect_error({{"mesh", "folder"}}, "/1/mesh", "not a file (a folder): ");
+  expect_error({{"mesh", {"cube.off", "nope.obj"}}, {"mode", "drop"}}, "/1/mesh/1", "file not found: ");
+  expect_error({{"scene", "nope.json"}}, "/1/scene", "file not found: ");
+  expect_error({{"mesh", "cube.off"}, {"resolution", 5}}, "/1/resolution", "expected WxH");
+  expect_error({{"mesh", "cube.off"}, {"video", "v.avi"}}, "/1/video", "cannot write 'v.avi'");
+  expect_error({{"mesh", "cube.off"}, {"background", "pink"}}, "/1/background", "expected a colour #rrggbb");
+  expect_error({{"mesh", "cube.off"}, {"color", "#12345"}}, "/1/color", "expected a colour #rrggbb");
+  expect_error({{"mesh", "cube.off"}, {"mode", "drop"}, {"camera-target", "1,2"}}, "/1/camera-target",
+               "expected X,Y,Z");
+  expect_error({{"mesh", "cube.off"}, {"video", ""}}, "/1/video", "expected a file name");
+  expect_error({{"mesh", "cube.off"}, {"frames", 0}}, "/1/frames", "frame numbers start at 1");
+  // A default from --set is refused at the first item it reaches.
+  write_text(dir / "m/m.json", json::array({{{"mesh", "cube.off"}}}).dump());
+  const CommandResult set = run_recoil("batch " + shell_quote(dir / "m/m.json") + " --list --set resolution=big");
+  EXPECT_EQ(set.exit_code, 2);
+  EXPECT_NE(set.err.find("m.json: /0/resolution: expected WxH"), std::string::npos) << set.err;
+}
+
+// Runs `recoil ARGS` from inside `cwd`, its output streams kept outside it.
+CommandResult run_recoil_in(const fs::path& cwd, const std::string& args) {
+  const fs::path logs = scratch_dir("batch_run_in_logs");
+  const int status = std::system(("cd " + shell_quote(cwd) + " && '" RECOIL_BINARY "' " + args + " </dev/null >" +
+                                  shell_quote(logs / "out") + " 2>" + shell_quote(logs / "err"))
+                                     .c_str());
+  CommandResult r;
+  r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  r.out = file_bytes(logs / "out");
+  r.err = file_bytes(logs / "err");
+  return r;
+}
+
+TEST(BatchCommand, EveryPathInAnItemIsRelativeToTheManifest) {
+  const fs::path dir = scratch_dir("batch_item_paths");
+  fs::create_directories(dir / "m");
+  fs::create_directories(dir / "elsewhere");
+  fs::copy_file(kModels / "OFF/Cube.off", dir / "m/cube.off");
+  const json one_frame = {{"mesh", "cube.off"}, {"frames", 1}, {"resolution", "64x48"}};
+  json relative = one_frame, absolute = one_frame;
+  relative.update({{"name", "rel"}, {"video", "v.gif"}, {"save-scene", "s.json"}, {"stats", "st.jsonl"}});
+  absolute.update({{"name", "abs"}, {"video", (dir / "abs.gif").string()}});
+  write_text(dir / "m/m.json", json::array({relative, absolute}).dump());
+  // Given as a relative path from another folder, which is where the run's own relative paths would land.
+  const std::string args = "batch ../m/m.json -o ../out";
+  const CommandResult listed = run_recoil_in(dir / "elsewhere", args + " --list");
+  ASSERT_EQ(listed.exit_code, 0) << listed.err;
+  EXPECT_NE(listed.out.find("--video ../m/v.gif"), std::string::npos) << listed.out;
+  EXPECT_NE(listed.out.find("--video " + (dir / "abs.gif").string()), std::string::npos) << listed.out;
+  const CommandResult r = run_recoil_in(dir / "elsewhere", args);
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  for (const char* written : {"m/v.gif", "m/s.json", "m/st.jsonl", "abs.gif", "out/rel/frame_0001.png"})
+    EXPECT_TRUE(fs::is_regular_file(dir / written)) << written;
+  EXPECT_TRUE(fs::is_empty(dir / "elsewhere"));
 }
 
 TEST(BatchCommand, ContactSheetIsRebuiltFromFinishedOutputsAlone) {
