@@ -8,7 +8,6 @@
 #include "core/error.h"
 
 namespace recoil::cli {
-namespace fs = std::filesystem;
 
 void fail_at_option(const JsonCursor& item, const std::string& message) {
   const size_t colon = message.find(": ");
@@ -17,14 +16,6 @@ void fail_at_option(const JsonCursor& item, const std::string& message) {
   for (const auto& [key, value] : item.value().items())
     if (message.find("--" + key) != std::string::npos) item.child(key).fail(message);
   item.fail(message);
-}
-
-void check_input_file(const JsonCursor& field, const fs::path& path) {
-  std::error_code ec;
-  if (fs::is_regular_file(path, ec)) return;
-  if (fs::is_directory(path, ec)) field.fail("not a file (a folder): " + path.string());
-  if (fs::exists(path, ec)) field.fail("not a regular file: " + path.string());
-  field.fail("file not found: " + path.string());
 }
 
 void check_option_values(const std::vector<std::string>& args, const JsonCursor& item) {

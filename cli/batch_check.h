@@ -10,9 +10,6 @@
 
 namespace recoil::cli {
 
-// Fails at `field` unless `path` (the file it names) is a regular file.
-void check_input_file(const JsonCursor& field, const std::filesystem::path& path);
-
 // Fails with `message`, a parser's refusal that names an option ("--NAME:
 // why"), at the field NAME of `item` (with the why alone), or at the first
 // field whose option the message mentions, else at the item itself.

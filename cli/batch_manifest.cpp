@@ -12,6 +12,7 @@
 #include "cli/batch_check.h"
 #include "cli/commands.h"
 #include "cli/file_io.h"
+#include "cli/input_file.h"
 #include "cli/json_cursor.h"
 #include "core/error.h"
 #include "core/lower_case.h"
@@ -88,7 +89,7 @@ BatchItem to_item(const JsonCursor& entry, const nlohmann::json& defaults, const
   };
   const auto input = [&](const JsonCursor& path) {
     const std::string file = resolve(path);
-    check_input_file(path, file);
+    require_regular_file(path, file);
     return file;
   };
   if (source.value().is_array() && has_mesh) {

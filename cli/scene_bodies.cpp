@@ -9,6 +9,7 @@
 #include <unordered_set>
 
 #include "cli/format_number.h"
+#include "cli/input_file.h"
 #include "cli/up_axis.h"
 #include "core/error.h"
 #include "sim/geometry/boundary.h"
@@ -146,11 +147,7 @@ fs::path resolve_file(const JsonCursor& c, const fs::path& base_dir) {
   const std::string text = c.string();
   if (text.empty()) c.fail("empty file name");
   const fs::path path = fs::path(text).is_absolute() ? fs::path(text) : (base_dir / text).lexically_normal();
-  std::error_code ec;
-  const fs::file_status status = fs::status(path, ec);
-  if (!fs::exists(status)) c.fail("file not found: " + path.string());
-  if (fs::is_directory(status)) c.fail("a folder, not a file: " + path.string());
-  if (!fs::is_regular_file(status)) c.fail("not a regular file (a device, FIFO or socket): " + path.string());
+  require_regular_file(c, path);
   return path;
 }
 

@@ -323,7 +323,7 @@ TEST(BatchCommand, EveryItemIsCheckedAsItsRunWouldBeBeforeTheFirstRuns) {
     EXPECT_EQ(e.find("--"), std::string::npos) << bad << ": names the option, not the field: " << e;
   };
   expect_error({{"mesh", "nope.obj"}}, "/1/mesh", "file not found: ");
-  expect_error({{"mesh", "folder"}}, "/1/mesh", "not a file (a folder): ");
+  expect_error({{"mesh", "folder"}}, "/1/mesh", "a folder, not a file: ");
   expect_error({{"mesh", {"cube.off", "nope.obj"}}, {"mode", "drop"}}, "/1/mesh/1", "file not found: ");
   expect_error({{"scene", "nope.json"}}, "/1/scene", "file not found: ");
   expect_error({{"mesh", "cube.off"}, {"resolution", 5}}, "/1/resolution", "expected WxH");
