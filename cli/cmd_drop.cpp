@@ -35,7 +35,7 @@ void add_drop_command(CLI::App& app, const GlobalOptions& global, Action& action
       ->check(CLI::Range(0.0, 100.0))->capture_default_str();
   cmd->add_option("--friction", options->drop.friction, "Friction coefficient of the ground and the bodies")
       ->check(CLI::Range(0.0, 10.0))->capture_default_str();
-  cmd->add_option("--count", options->drop.count, "Drop this many copies in a loose pile (seeded: reruns match)")
+  cmd->add_option("--count", options->drop.count, "Drop this many bodies in a loose pile, the meshes taking turns (seeded: reruns match); 1: each mesh once, side by side")
       ->check(CLI::Range(1, 1000))->capture_default_str();
   cmd->add_option("--seconds", options->drop.seconds, "Simulated seconds")
       ->check(CLI::Range(0.0, 3600.0))->capture_default_str();
