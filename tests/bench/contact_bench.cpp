@@ -1,5 +1,6 @@
-// `recoil_bench contact`: the contact solvers (cr, cr_plain, pgs) on three
-// short scenes: a jelly stack, eight deformable bunnies dropped on each other
+// `recoil_bench contact`: the contact solvers (cr, cr_plain, pgs) on short
+// scenes: a jelly stack (dropped 10 cm cubes on a coarse lattice, and 20 cm
+// cubes on a finer one stacked exactly touching), eight deformable bunnies dropped on each other
 // (in one column, and in two layers of four), a soft block between
 // counter-rotating rollers. Per method: mean solver
 // iterations per step, ms per step (whole step and solve stage), the final
@@ -94,10 +95,13 @@ void bench_contact() {
     int warmup, steps;
   };
   sim::WorldDesc stack = sim::scenes::jelly_stack(3, 0.1, 3, 0.01);
+  sim::WorldDesc touching = sim::scenes::touching_jelly_stack(3, 5);
   sim::WorldDesc pile = sim::scenes::bunny_pile(bunny, 8, 0.12, 3, 0.005);
   sim::WorldDesc layers = sim::scenes::bunny_layers(bunny, 0.12, 3, 0.005);
   sim::WorldDesc roll = sim::scenes::rollers(6.0, 3, 0.005);
-  // The stack starts in contact and settles within the 30 steps. The first
+  // The stack starts in contact and settles within the 30 steps; the
+  // touching stack's 108 face contacts decide stick or slip at its edges
+  // over its first 40 steps. The first
   // bunny of the column meets the ground at step 8, the second lands on it
   // at step 23; the upper layer of the two-layer pile (the validation test's
   // scene) lands on the lower one at step 25; the block meets the rollers at
@@ -105,7 +109,8 @@ void bench_contact() {
   //: the column beyond step 26, where cr breaks down at step 78
   // (KKT 0.03-120 m/s from step 75), and the layers beyond step 36 (each
   // step costs pgs 1-7 s).
-  const std::vector<Scene> scenes = {{"jelly stack (3)", stack, 0, 30},
+  const std::vector<Scene> scenes = {{"jelly stack: 3 x 10 cm, lattice 3", stack, 0, 30},
+                                     {"jelly stack: 3 x 20 cm touching, lattice 5", touching, 0, 40},
                                      {"bunny column: 1st lands", pile, 8, 14},
                                      {"bunny column: 2nd lands", pile, 22, 4},
                                      {"bunny layers: 2nd layer lands", layers, 24, 12},
