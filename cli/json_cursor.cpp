@@ -50,9 +50,9 @@ std::pair<size_t, size_t> line_and_column(const std::string& text, size_t offset
   return {line, column};
 }
 
-// A SAX reader that only follows where it is in the document, so that the
-// one error the DOM parser cannot place (a number overflowing a double) can
-// be given its JSON pointer.
+// A SAX reader that only follows where it is in the document, so that what
+// the DOM parser cannot place (a number overflowing a double) or lets pass
+// (a key given twice) can be given its JSON pointer.
 class PointerTracker : public nlohmann::json_sax<nlohmann::json> {
  public:
   std::string pointer() const {

@@ -153,10 +153,11 @@ double video_fps(const std::vector<int>& selected, double fps) {
 
 // Where the scene DIR/scene.json describes, written by the run that drew the
 // frames beside it, differs from `resolved`: a JSON pointer ("/bodies/0/material"),
-// "" when they are the same scene, or why no comparison was possible.
+// or "" when they are the same scene. A folder without one holds no run's
+// frames (a run writes it before its first frame), and is "" too.
 std::string difference_from_saved_scene(const fs::path& saved, const nlohmann::json& resolved) {
   std::error_code ec;
-  if (!fs::is_regular_file(saved, ec)) return "no scene.json beside them";
+  if (!fs::exists(saved, ec)) return "";
   const std::vector<std::uint8_t> bytes = read_file_bytes(saved);
   const nlohmann::json before = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
   if (before.is_discarded()) return "scene.json beside them is not JSON";
@@ -174,10 +175,11 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const int last_frame = selected.back();
   if (last_frame > scene.frame_count())
     throw bad_input(scene.label() + ": --frames: frame " + std::to_string(last_frame) + " is past the last, " +
-                    std::to_string(scene.frame_count()) + " (simulation.duration " + format_number("%g", scene.duration) +
-                    " s at render.fps " + format_number("%g", fps) + "); lengthen the duration to draw it (drop: --seconds; turntable: --turn-frames)");
+                    std::to_string(scene.frame_count()) + " (simulation.duration " +
+                    format_number("%g", scene.duration) + " s at render.fps " + format_number("%g", fps) +
+                    "); lengthen the duration to draw it (drop: --seconds; turntable: --turn-frames)");
   // Frame names keep their width whatever subset is rendered.
-  const int name_count = std::max(scene.frame_count(), last_frame);
+  const int name_count = scene.frame_count();
   if (!job.video.empty()) {
     require_video(job.video, scene.render.background == "transparent");
     if (!job.render) throw bad_input("--video needs rendered frames; drop --no-render");
