@@ -75,7 +75,7 @@ TEST(MeshImport, FifoAndDeviceAreRefused) {
 // words ("Mesh  contains no faces"): the message says what the file lacks.
 TEST(MeshImport, APointCloudIsRefusedForItsMissingFaces) {
   const fs::path dir = test::scratch_dir("mesh_import_points");
-  std::ofstream(dir / "points.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\np 1 2 3\n";
+  std::ofstream(dir / "points.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   const std::string e = test::bad_input_within_a_second([&] { import_surface(dir / "points.obj"); });
   expect_names(e, (dir / "points.obj").string());
   expect_names(e, "no faces (a point cloud?)");
