@@ -21,6 +21,9 @@ std::optional<ItemRecord> read_item_record(const fs::path& item_dir) {
   r.seconds = j.value("seconds", 0.0);
   r.message = j.value("message", "");
   r.shard = j.value("shard", "");
+  if (const auto command = j.find("command"); command != j.end() && command->is_array())
+    for (const nlohmann::json& arg : *command)
+      if (arg.is_string()) r.command.push_back(arg.get<std::string>());
   if (r.status != "succeeded" && r.status != "failed") return std::nullopt;
   return r;
 }
@@ -28,8 +31,8 @@ std::optional<ItemRecord> read_item_record(const fs::path& item_dir) {
 namespace {
 
 nlohmann::json to_json(const ItemRecord& r) {
-  return {{"index", r.index}, {"name", r.name},       {"status", r.status}, {"exit_code", r.exit_code},
-          {"seconds", r.seconds}, {"message", r.message}, {"shard", r.shard}};
+  return {{"index", r.index},     {"name", r.name},       {"status", r.status}, {"exit_code", r.exit_code},
+          {"seconds", r.seconds}, {"message", r.message}, {"shard", r.shard},   {"command", r.command}};
 }
 
 }  // namespace
@@ -45,6 +48,7 @@ std::vector<ItemRecord> write_batch_summary(const fs::path& output, const fs::pa
   int succeeded = 0, failed = 0;
   for (const BatchItem& item : items) {
     ItemRecord r = read_item_record(output / item.name).value_or(ItemRecord{});
+    if (!records_item(r, item)) r = ItemRecord{};
     if (r.status.empty()) r.status = "pending";
     r.index = item.index;
     r.name = item.name;
@@ -52,7 +56,7 @@ std::vector<ItemRecord> write_batch_summary(const fs::path& output, const fs::pa
     failed += r.status == "failed";
     nlohmann::json entry = to_json(r);
     entry["output"] = (output / item.name).string();
-    entry["command"] = item.args;
+    entry["command"] = item.args;  // also for an item still pending
     list.push_back(entry);
     records.push_back(r);
   }

@@ -18,8 +18,15 @@ struct ItemRecord {
   double seconds = 0.0;
   std::string message;  // the item's error line when it failed
   std::string shard;    // "I/N" of the process that ran it
+  std::vector<std::string> command;  // the item's command line it ran (BatchItem::args)
+  bool reused = false;  // finished by an earlier batch, not run by this one (never on disk)
   bool succeeded() const { return status == "succeeded"; }
 };
+
+// The record describes `item` as the manifest gives it now: a record of
+// another command line (the manifest or a --set changed since) is stale,
+// and its item is run again.
+inline bool records_item(const ItemRecord& record, const BatchItem& item) { return record.command == item.args; }
 
 // DIR/NAME/item.json when it is there and readable, else nothing.
 std::optional<ItemRecord> read_item_record(const std::filesystem::path& item_dir);

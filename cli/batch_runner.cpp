@@ -100,9 +100,10 @@ ItemRecord finish_item(const Running& run, int status, const Shard& shard, const
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - run.start).count();
   if (r.exit_code != 0) r.message = failure_message(run.partial / "log.txt", status);
   r.shard = shard.text();
+  r.command = run.item->args;
   write_item_record(run.partial, r);
   const fs::path final_dir = output / run.item->name;
-  remove_or_throw(final_dir);  // an earlier failure's record
+  remove_or_throw(final_dir);  // an earlier run's: a failure, or a success of another command line
   std::error_code ec;
   fs::rename(run.partial, final_dir, ec);
   if (ec) throw output_error("cannot move " + run.partial.string() + " to " + final_dir.string() + ": " + ec.message());
@@ -131,8 +132,12 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
   for (const BatchItem& item : items) {
     if (!options.shard.keeps(item.index)) continue;
     const std::optional<ItemRecord> done = read_item_record(options.output / item.name);
-    if (done && done->succeeded()) records[item.index] = *done;
-    else todo.push_back(&item);
+    if (done && done->succeeded() && records_item(*done, item)) {
+      records[item.index] = *done;
+      records[item.index].reused = true;
+    } else {
+      todo.push_back(&item);
+    }
   }
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
@@ -156,8 +161,10 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
         continue;
       }
       held = 0;
-      if (const std::optional<ItemRecord> r = read_item_record(options.output / item.name); r && r->succeeded()) {
+      if (const std::optional<ItemRecord> r = read_item_record(options.output / item.name);
+          r && r->succeeded() && records_item(*r, item)) {
         records[item.index] = *r;
+        records[item.index].reused = true;
         progress.update(++done);
         continue;
       }

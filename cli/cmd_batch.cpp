@@ -101,10 +101,15 @@ int run_batch(const BatchOptions& options, const GlobalOptions& global) {
   const std::vector<ItemRecord> all = write_batch_summary(output, source, items);
   if (!options.contact_sheet.empty()) write_contact_sheet(options.contact_sheet, output, all);
   if (!global.quiet) {
-    int ok = 0, failed = 0;
-    for (const ItemRecord& r : mine) (r.succeeded() ? ok : failed)++;
+    int ok = 0, failed = 0, reused = 0;
+    for (const ItemRecord& r : mine) {
+      (r.succeeded() ? ok : failed)++;
+      reused += r.reused;
+    }
     if (!options.contact_sheet_only)
-      std::cerr << "recoil: batch: " << ok << " succeeded, " << failed << " failed"
+      std::cerr << "recoil: batch: " << ok << " succeeded"
+                << (reused > 0 ? " (" + std::to_string(reused) + " finished by an earlier run)" : "") << ", "
+                << failed << " failed"
                 << (shard.count > 1 ? " in shard " + shard.text() : "") << "; summary in "
                 << (output / "batch.json").string() << "\n";
     if (!options.contact_sheet.empty()) std::cerr << "recoil: wrote contact sheet " << options.contact_sheet << "\n";
@@ -139,8 +144,9 @@ void add_batch_command(CLI::App& app, const GlobalOptions& global, Action& actio
       "and every item is checked before the first runs. A folder means every mesh file in it, as\n"
       "turntables.\n"
       "Each item writes into OUT/NAME/ (NAME from its file, made unique: cube, cube-2) and is\n"
-      "complete once OUT/NAME/item.json says \"succeeded\": a rerun skips complete items and\n"
-      "redoes the rest, so a killed batch loses at most the items in flight. A failed item is\n"
+      "complete once OUT/NAME/item.json says \"succeeded\" for its command line: a rerun skips\n"
+      "complete items and redoes the rest (an item whose entry or --set changed included), so a\n"
+      "killed batch loses at most the items in flight. A failed item is\n"
       "recorded (exit code, message) and never stops the others. OUT/batch.json lists every item;\n"
       "the exit code is 0 when all succeeded, else the largest item exit code.\n\n"
       "On a farm, each array task runs one shard: Slurm's SLURM_ARRAY_TASK_ID/COUNT are read\n"

@@ -126,6 +126,33 @@ std::map<std::string, std::string> frames_under(const fs::path& out) {
   return frames;
 }
 
+// An item is finished only for the command line it ran: one whose manifest
+// entry changed is run again, its old output replaced, while the unchanged
+// ones are kept and the summary says so.
+TEST(BatchCommand, ARerunRedoesTheItemsWhoseCommandChanged) {
+  const fs::path dir = scratch_dir("batch_changed");
+  const fs::path manifest = cube_manifest(dir, 2);
+  const std::string args = "batch " + shell_quote(manifest) + " -o " + shell_quote(dir / "out");
+  ASSERT_EQ(run_recoil(args).exit_code, 0);
+  const CommandResult same = run_recoil(args);
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_NE(same.err.find("2 succeeded (2 finished by an earlier run), 0 failed"), std::string::npos) << same.err;
+  json items = read_json(manifest);
+  items[1]["color"] = "#ff0000";
+  write_text(manifest, items.dump());
+  const CommandResult changed = run_recoil(args + " --log-json");
+  ASSERT_EQ(changed.exit_code, 0) << changed.err;
+  std::set<int> ran;
+  for (const json& e : item_events(changed.err)) ran.insert(e["index"].get<int>());
+  EXPECT_EQ(ran, (std::set<int>{1}));
+  EXPECT_EQ(read_json(dir / "out/cube1/scene.json")["bodies"][1]["color"], "#ff0000");
+  const json summary = read_json(dir / "out/batch.json");
+  EXPECT_EQ(summary["succeeded"], 2);
+  EXPECT_EQ(summary["items"][1]["status"], "succeeded");
+  const std::vector<std::string> command = read_json(dir / "out/cube1/item.json")["command"];
+  EXPECT_NE(std::find(command.begin(), command.end(), "#ff0000"), command.end());
+}
+
 TEST(BatchCommand, KillNineAtSeveralMomentsLosesOnlyTheItemsInFlight) {
   const fs::path dir = scratch_dir("batch_kill");
   json items = json::array();
