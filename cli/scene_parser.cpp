@@ -70,8 +70,11 @@ void parse_camera(const JsonCursor& c, SceneDesc& scene) {
   cam.azimuth = c.number_in_or("azimuth", cam.azimuth, kAngleRange);
   cam.elevation = c.number_in_or("elevation", cam.elevation, {-89.0, 89.0});
   cam.distance = c.has("distance") ? c.child("distance").number_in(kCameraDistanceRange) : cam.distance;
-  if (cam.has_position && cam.distance > 0.0)
-    c.child("distance").fail("has no effect on a camera at a given position; give position or distance");
+  // Azimuth, elevation and distance place a camera round its target; a given position places it already.
+  for (const char* placing : {"azimuth", "elevation", "distance"})
+    if (cam.has_position && c.has(placing))
+      c.child(placing).fail(std::string("has no effect on a camera at a given position; give position or ") +
+                            placing);
   if (cam.mode == CameraMode::orbit) cam.turns = c.number_in_or("turns", cam.turns, kTurnsRange);
   if (cam.mode == CameraMode::follow) {
     const JsonCursor body = c.child("body");

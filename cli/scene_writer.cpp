@@ -103,8 +103,14 @@ json body_json(const SceneBody& body, const sim::WorldDesc& world) {
 }
 
 json camera_json(const CameraDesc& c) {
-  json out = {{"mode", camera_mode_name(c.mode)}, {"fov", c.fov}, {"azimuth", c.azimuth}, {"elevation", c.elevation}};
-  if (c.has_position) out["position"] = json_vec3(c.position);
+  json out = {{"mode", camera_mode_name(c.mode)}, {"fov", c.fov}};
+  // A camera at a given position has no azimuth or elevation: the parser refuses them beside it.
+  if (c.has_position) {
+    out["position"] = json_vec3(c.position);
+  } else {
+    out["azimuth"] = c.azimuth;
+    out["elevation"] = c.elevation;
+  }
   if (c.has_target) out["target"] = json_vec3(c.target);
   if (c.distance > 0.0) out["distance"] = c.distance;  // 0, "fit the scene", is the key left out
   if (c.mode == CameraMode::orbit) out["turns"] = c.turns;

@@ -179,6 +179,8 @@ TEST(SceneFile, BadSceneCorpusGivesExit2NamingFileAndPointer) {
       {"up-primitive.json", {"/bodies/1/up: only for mesh files"}},
       {"duplicate-key.json", {"/bodies/1/material/density: given twice in one object"}},
       {"mesh-folder.json", {"/bodies/1/mesh: a folder, not a file"}},
+      {"camera-azimuth-position.json",
+       {"/render/camera/azimuth: has no effect on a camera at a given position; give position or azimuth"}},
       {"scale-type.json", {"/bodies/1/transform/scale: expected a number or an array of 3 numbers, got a boolean"}},
   };
   const fs::path out = scratch_dir("bad_scenes");
