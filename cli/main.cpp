@@ -1,7 +1,8 @@
 // recoil: the command-line entry point. Parses the command line, runs the
 // chosen subcommand and turns every failure into one `recoil: error:` line
-// and the exit code (README, "Exit codes").
+// (a JSON line with --log-json) and the exit code (README, "Exit codes").
 #include <iostream>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "cli/build_info.h"
@@ -9,6 +10,21 @@
 #include "cli/shell_quote.h"
 #include "cli/usage_error.h"
 #include "core/error.h"
+
+namespace {
+
+// A run's failure or interruption: one `recoil: error: ...` (or `recoil:
+// interrupted ...`) line, or with --log-json one {"event": ...} line a log
+// reader can parse like the rest.
+void report_end(const recoil::cli::GlobalOptions& global, const char* event, const std::string& message, int code) {
+  if (global.log_json) {
+    std::cerr << nlohmann::json{{"event", event}, {"message", message}, {"exit_code", code}}.dump() << std::endl;
+  } else {
+    std::cerr << "recoil: " << (std::string(event) == "error" ? "error: " : "") << message << std::endl;
+  }
+}
+
+}  // namespace
 
 int main(int argc, char** argv) {
   using namespace recoil;
@@ -22,7 +38,8 @@ int main(int argc, char** argv) {
   global.command_line = "recoil";
   for (int i = 1; i < argc; ++i) global.command_line += " " + cli::shell_word(argv[i]);
   app.add_flag("-q,--quiet", global.quiet, "No progress bar or summary lines")->configurable(false);
-  app.add_flag("--log-json", global.log_json, "Machine-readable progress lines (JSON) on stderr");
+  app.add_flag("--log-json", global.log_json,
+               "Machine-readable lines (JSON) on stderr: progress, the summary, an error (-q does not silence them)");
   app.add_option("--max-memory", global.max_memory_gib,
                  "GiB a run may use: one estimated to need more is refused before it starts (default: 80% of RAM)")
       ->check(CLI::Range(0.01, 1e6));
@@ -44,10 +61,10 @@ int main(int argc, char** argv) {
   try {
     return action ? action() : 0;
   } catch (const Interrupted& e) {
-    std::cerr << "recoil: " << e.what() << std::endl;
+    report_end(global, "interrupted", e.what(), e.exit_code());
     return e.exit_code();
   } catch (const Error& e) {
-    std::cerr << "recoil: error: " << e.what() << std::endl;
+    report_end(global, "error", e.what(), e.exit_code());
     return e.exit_code();
   } catch (const std::bad_alloc&) {
     std::cerr << "recoil: error: out of memory" << std::endl;

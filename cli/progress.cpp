@@ -52,11 +52,21 @@ void Progress::update(int done) {
 }
 
 bool Progress::due() const {
-  return m_bar && std::chrono::steady_clock::now() - m_last_draw >= std::chrono::milliseconds(100);
+  if (!m_bar && !m_json) return false;
+  // A log keeps every line, so it gets fewer than the bar that redraws in place.
+  const auto interval = m_json ? std::chrono::milliseconds(1000) : std::chrono::milliseconds(100);
+  return std::chrono::steady_clock::now() - m_last_draw >= interval;
 }
 
 void Progress::working(const std::string& detail) {
-  if (due()) draw(detail);
+  if (!due()) return;
+  if (m_json) {
+    m_last_draw = std::chrono::steady_clock::now();
+    const nlohmann::json line = {{"command", m_label}, {"event", "working"}, {"done", m_done}, {"detail", detail}};
+    std::fprintf(stderr, "%s\n", line.dump().c_str());
+    return;
+  }
+  draw(detail);
 }
 
 void Progress::stage(const std::string& what) {

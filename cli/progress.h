@@ -1,7 +1,8 @@
 #pragma once
 // Progress for long work: a one-line bar with count, rate and ETA on a
 // terminal (redrawn in place on stderr), nothing when stderr is not a TTY or
-// with --quiet, and one JSON object per finished item with --log-json.
+// with --quiet, and JSON lines with --log-json (each finished item, and
+// signs of life within a long one).
 #include <chrono>
 #include <string>
 
@@ -17,7 +18,8 @@ class Progress {
   // `done` items of `total` are finished.
   void update(int done);
   // Work inside the current item (the steps before a frame): redraws the bar
-  // with `detail` at most 10 times a second, so a slow item still shows life.
+  // with `detail` at most 10 times a second, so a slow item still shows life;
+  // with --log-json, one {"event": "working"} line a second at most.
   void working(const std::string& detail);
   // A stage before the first item (building the bodies): drawn at once on a
   // terminal, one {"event": "stage"} line with --log-json.
