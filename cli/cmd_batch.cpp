@@ -127,13 +127,20 @@ void add_batch_command(CLI::App& app, const GlobalOptions& global, Action& actio
   cmd->add_option("--shard", options->shard, "Run only shard I of N (0-based): the items whose index mod N is I");
   cmd->add_option("--shard-count", options->shard_count, "Shards in all, with the index from JOB_COMPLETION_INDEX")
       ->check(CLI::Range(1, 1000000));
-  cmd->add_option("--jobs", options->jobs, "Items run at once (the cores are shared out among them)")
-      ->check(CLI::Range(1, 256))->capture_default_str();
+  CLI::Option* jobs = cmd->add_option("--jobs", options->jobs, "Items run at once (the cores are shared out among them)")
+                          ->check(CLI::Range(1, 256))
+                          ->capture_default_str();
   cmd->add_option("--set", options->settings, "KEY=VALUE given to every item that does not set KEY (repeatable)");
-  cmd->add_option("--contact-sheet", options->contact_sheet, "Also write a PNG grid of every item's last frame");
-  cmd->add_flag("--contact-sheet-only", options->contact_sheet_only,
-                "Run nothing: rebuild batch.json and the contact sheet from the outputs there");
-  cmd->add_flag("--list", options->list, "Print each item's folder and command line, and run nothing");
+  CLI::Option* sheet =
+      cmd->add_option("--contact-sheet", options->contact_sheet, "Also write a PNG grid of every item's last frame");
+  CLI::Option* sheet_only = cmd->add_flag("--contact-sheet-only", options->contact_sheet_only,
+                                          "Run nothing: rebuild batch.json and the contact sheet from the outputs there");
+  // What runs nothing takes no option that only shapes a run or its outputs.
+  sheet_only->excludes(jobs);
+  cmd->add_flag("--list", options->list, "Print each item's folder and command line, and run nothing")
+      ->excludes(jobs)
+      ->excludes(sheet)
+      ->excludes(sheet_only);
   cmd->footer(
       "A manifest is a JSON list; each item names a \"scene\" (run) or a \"mesh\" with \"mode\"\n"
       "\"turntable\" (default) or \"drop\", and any options of that command by their long name:\n"

@@ -404,6 +404,23 @@ TEST(BatchCommand, EveryPathInAnItemIsRelativeToTheManifest) {
   EXPECT_TRUE(fs::is_empty(dir / "elsewhere"));
 }
 
+// --list and --contact-sheet-only run nothing: an option that would shape a
+// run or write an output cannot apply to them, and is refused, not ignored.
+TEST(BatchCommand, WhatRunsNothingRefusesTheOptionsOfARun) {
+  const fs::path dir = scratch_dir("batch_list_options");
+  const std::string batch = "batch " + shell_quote(cube_manifest(dir, 1)) + " -o " + shell_quote(dir / "out");
+  for (const auto& [options, message] : std::vector<std::pair<std::string, std::string>>{
+           {"--list --jobs 3", "--jobs excludes --list"},
+           {"--list --contact-sheet " + shell_quote(dir / "s.png"), "--contact-sheet excludes --list"},
+           {"--contact-sheet-only --jobs 2", "--jobs excludes --contact-sheet-only"}}) {
+    const CommandResult r = run_recoil(batch + " " + options);
+    EXPECT_EQ(r.exit_code, 2) << options;
+    EXPECT_NE(r.err.find(message), std::string::npos) << r.err;
+  }
+  EXPECT_FALSE(fs::exists(dir / "s.png"));
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 TEST(BatchCommand, ContactSheetIsRebuiltFromFinishedOutputsAlone) {
   const fs::path dir = scratch_dir("batch_sheet");
   const fs::path manifest = cube_manifest(dir, 3);
