@@ -47,7 +47,10 @@ Shard choose_shard(const std::string& shard_option, int shard_count) {
   const int slurm_id = env_int("SLURM_ARRAY_TASK_ID", has_id);
   const int slurm_count = env_int("SLURM_ARRAY_TASK_COUNT", has_count);
   const int slurm_min = env_int("SLURM_ARRAY_TASK_MIN", has_min);
-  if (has_id && has_count) {
+  if (has_id) {
+    // Slurm sets both for an array task; an index alone would run every item in every task.
+    if (!has_count && shard_count <= 0)
+      throw bad_input("SLURM_ARRAY_TASK_ID is set but SLURM_ARRAY_TASK_COUNT is not: give --shard-count, or --shard I/N");
     // Array indices need not start at 0 (--array=1-8): count from the first.
     return checked({slurm_id - (has_min ? slurm_min : 0), shard_count > 0 ? shard_count : slurm_count},
                    "SLURM_ARRAY_TASK_ID/SLURM_ARRAY_TASK_COUNT");

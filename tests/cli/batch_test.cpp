@@ -296,6 +296,11 @@ TEST(BatchCommand, ShardsTakeTheirItemsFromOptionsOrTheFarmsVariables) {
   EXPECT_EQ(summary["succeeded"], 7);
   EXPECT_EQ(run_recoil("batch " + shell_quote(manifest) + " --shard 3/3").exit_code, 2);
   EXPECT_EQ(run_recoil("batch " + shell_quote(manifest) + " --shard-count 3").exit_code, 2);
+  // An array index without the array's size would run every item in every task.
+  EXPECT_NE(std::system(("SLURM_ARRAY_TASK_ID=1 '" RECOIL_BINARY "' batch " + shell_quote(manifest) + " --list -q " +
+                         "2>/dev/null >/dev/null")
+                            .c_str()),
+            0);
 }
 
 TEST(BatchCommand, ManifestErrorsNameTheItemAndTheFieldBeforeAnythingRuns) {
