@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "cli/file_io.h"
 #include "cli/format_number.h"
+#include "cli/output_dir.h"
 #include "cli/compare_pairs.h"
 #include "cli/compare_report.h"
 #include "cli/progress.h"
@@ -74,10 +75,12 @@ nlohmann::ordered_json to_json(const std::vector<PairResult>& results, const Pai
 // frames and would overwrite them.
 void check_diff_dir(const CompareOptions& options, const PairPlan& plan) {
   if (options.diff_dir.empty()) return;
+  try {
+    ensure_output_dir(options.diff_dir);
+  } catch (const Error& e) {
+    throw Error(e.kind(), "--diff: " + std::string(e.what()));
+  }
   std::error_code ec;
-  fs::create_directories(options.diff_dir, ec);
-  if (ec || !fs::is_directory(options.diff_dir))
-    throw output_error("cannot create --diff directory " + options.diff_dir);
   for (const auto* list : {&plan.actual, &plan.reference})
     for (const fs::path& p : *list) {
       const fs::path parent = p.parent_path().empty() ? fs::path(".") : p.parent_path();

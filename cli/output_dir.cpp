@@ -17,6 +17,9 @@ fs::path default_output_dir(const std::string& name) { return fs::path("output")
 
 void ensure_output_dir(const fs::path& dir) {
   std::error_code ec;
+  // A file where the folder should be is a mistake in the command, not a failure a retry may get past.
+  if (fs::exists(dir, ec) && !fs::is_directory(dir, ec))
+    throw bad_input(dir.string() + " is a file, not a folder: name a folder for the output");
   fs::create_directories(dir, ec);
   if (ec || !fs::is_directory(dir))
     throw output_error("cannot create output folder " + dir.string() + (ec ? ": " + ec.message() : ""));

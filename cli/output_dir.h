@@ -8,8 +8,9 @@ namespace recoil::cli {
 // output/<name>/ when the user gave no -o.
 std::filesystem::path default_output_dir(const std::string& name);
 
-// Creates `dir` (and parents); throws recoil::Error(output_failed) naming it
-// when that is impossible (a file in the way, no permission, disk full).
+// Creates `dir` (and parents); throws recoil::Error naming it when that is
+// impossible: bad_input when `dir` is a file, output_failed otherwise (a
+// file in the way above it, no permission, disk full).
 void ensure_output_dir(const std::filesystem::path& dir);
 
 }  // namespace recoil::cli

@@ -176,6 +176,13 @@ TEST(CompareCli, DiffWritesOneHeatMapPerPair) {
   // Heat maps named like the frames must not land among the inputs.
   EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref") + " --diff " + shell_quote(dir / "ref")).exit_code,
             2);
+  // A file where the folder should be is a mistake in the command (2), not an output failure (4).
+  std::ofstream(dir / "a_file") << "x";
+  const CommandResult onto_file = run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref") +
+                                             " --diff " + shell_quote(dir / "a_file"));
+  EXPECT_EQ(onto_file.exit_code, 2) << onto_file.err;
+  EXPECT_NE(onto_file.err.find("--diff: " + (dir / "a_file").string() + " is a file, not a folder"), std::string::npos)
+      << onto_file.err;
 }
 
 TEST(CompareCli, UpdateTouchesOnlyFailingPairs) {
