@@ -118,6 +118,11 @@ std::string describe_run_warnings(const RunResult& result) {
   if (result.still_moving())
     text += std::string(text.empty() ? "" : "; ") + "still moving after settling " +
             format_number("%g", result.settle_limit) + " s (a longer settle lets it come to rest)";
+  if (result.frames_below_ground > 0)
+    text += std::string(text.empty() ? "" : "; ") + "the camera is below the ground in " +
+            std::to_string(result.frames_below_ground) +
+            (result.frames_below_ground == 1 ? " frame" : " frames") +
+            ", whose underside hides the scene (raise the camera, or --no-ground)";
   if (!result.look_warnings.empty()) {
     text += std::string(text.empty() ? "" : "; ") + result.look_warnings.front();
     if (result.look_warnings.size() > 1) text += " (and " + std::to_string(result.look_warnings.size() - 1) + " more in run.json)";
@@ -330,7 +335,9 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
         const auto render_start = Clock::now();
         const render::RenderScene& drawn = view->update(world->surfaces());
         // An orbit spaces the scene's own frames round the turn.
-        renderer->render(drawn, view->camera(k, scene.frame_count()), image);
+        const render::Camera camera = view->camera(k, scene.frame_count());
+        if (settings.ground && drawn.ground && camera.eye.y() < drawn.ground_height) ++result.frames_below_ground;
+        renderer->render(drawn, camera, image);
         times.render = ms_since(render_start);
         if (video) video->add(image);
         writer->submit(path, image);

@@ -49,6 +49,7 @@ struct RunResult {
   // simulated as the layer of cells their surface crosses.
   std::vector<std::pair<std::string, double>> cell_layers;
   std::vector<std::string> look_warnings;  // "FILE: ..." for the looks drawn without something (a texture)
+  int frames_below_ground = 0;  // drawn from under the ground, whose underside hides everything above it
   double settle_limit = 0.0;  // s: the scene's settle
   double settle_time = 0.0;   // s: simulated before frame 1
   bool settled = false;       // every dynamic body came to rest within settle_limit

@@ -128,6 +128,19 @@ TEST(TurntableCommand, FramesSelectsAsInRunAndTheSceneReruns) {
   EXPECT_NE(bad.err.find("--frames"), std::string::npos) << bad.err;
 }
 
+// A camera under the ground sees only the ground's underside: the run says
+// so, and does not once the ground is hidden.
+TEST(TurntableCommand, ACameraBelowTheGroundIsWarnedOf) {
+  const fs::path dir = scratch_dir("turntable_below_ground");
+  const std::string command = "turntable " + bunny() + " --elevation -30 --turn-frames 2 --resolution 32x32 --msaa 0 -o ";
+  const CommandResult below = run_recoil(command + shell_quote(dir / "a"));
+  ASSERT_EQ(below.exit_code, 0) << below.err;
+  EXPECT_NE(below.err.find("warning: the camera is below the ground in 2 frames"), std::string::npos) << below.err;
+  const CommandResult hidden = run_recoil(command + shell_quote(dir / "b") + " --no-ground");
+  ASSERT_EQ(hidden.exit_code, 0) << hidden.err;
+  EXPECT_EQ(hidden.err.find("below the ground"), std::string::npos) << hidden.err;
+}
+
 // A tall box modelled leaning 25 degrees stands on one edge: --settle lets it
 // fall onto a long side and rest there before the orbit; without --settle it
 // is drawn as modelled, its lowest edge on the ground.
