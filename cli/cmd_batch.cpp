@@ -80,7 +80,9 @@ int run_batch(const BatchOptions& options, const GlobalOptions& global) {
   const fs::path source = options.source;
   const std::vector<BatchItem> items = load_batch_items(source, parse_settings(options.settings));
   const Shard shard = choose_shard(options.shard, options.shard_count);
-  const fs::path output = options.output.empty() ? default_output_dir(source.stem().string()) : fs::path(options.output);
+  // "meshes/" names its folder as "meshes" does: the trailing slash leaves an empty file name.
+  const fs::path named = source.filename().empty() ? source.parent_path() : source;
+  const fs::path output = options.output.empty() ? default_output_dir(named.stem().string()) : fs::path(options.output);
   if (options.list) {
     for (const BatchItem& item : items) {
       std::cout << item.index << "\t" << item.name << "\t" << (shard.keeps(item.index) ? "" : "(other shard)\t")
@@ -159,7 +161,7 @@ void add_batch_command(CLI::App& app, const GlobalOptions& global, Action& actio
       "On a farm, each array task runs one shard: Slurm's SLURM_ARRAY_TASK_ID/COUNT are read\n"
       "without options; a Kubernetes Indexed Job gives JOB_COMPLETION_INDEX, with --shard-count.\n\n"
       "Examples:\n"
-      "  recoil batch assets/ --set turn-frames=48 --set resolution=640x360 --contact-sheet sheet.png\n"
+      "  recoil batch assets/meshes/ --set turn-frames=48 --set resolution=640x360 --contact-sheet sheet.png\n"
       "  recoil batch manifest.json -o previews/ --jobs 2\n"
       "  recoil batch manifest.json -o previews/ --shard 1/4\n"
       "  recoil batch manifest.json -o previews/ --contact-sheet-only --contact-sheet sheet.png\n");

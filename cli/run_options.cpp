@@ -93,7 +93,7 @@ void add_run_options(CLI::App& command, RunOptions& options) {
       ->check(CLI::IsMember({"cr", "pgs", "cr-plain"}));
   command.add_flag("--no-render", options.no_render, "Simulate and write statistics only, no frames");
   command.add_option("--stats", options.stats, "Write the per-frame statistics here (default: DIR/stats.jsonl)");
-  command.add_option("--video", options.video, "Also encode the frames to this video: .mp4, .mov, .mkv, .webm or .gif (needs ffmpeg; over --background transparent .webm or .gif, which keep it); every Nth frame (--frames 1-120:N) plays at fps/N, in real time");
+  command.add_option("--video", options.video, "Also encode the frames to this video: .mp4, .mov, .mkv, .webm or .gif (needs ffmpeg; over --background transparent .webm or .gif, which keep it); every Nth frame (--frames 1-120:N) plays at fps/N, in real time; frames spaced unevenly (1,3,7-9) have no such rate and play at fps");
   command.add_flag("--resume", options.resume, "Keep frames already whole on disk, draw the rest (the simulation still runs)");
   command.add_flag("--strict", options.strict,
                    "Fail (exit 3) when a contact solve did not converge; the frames and run.json are still written");

@@ -1,6 +1,7 @@
 #include "cli/scene_info.h"
 
 #include <algorithm>
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 #include <nlohmann/json.hpp>
@@ -14,6 +15,10 @@
 
 namespace recoil::cli {
 namespace {
+
+// A length in metres as millimetres; below a nanometre it is round-off of a
+// surface that lies on the mesh itself, and reads 0.
+double millimetres(double metres) { return std::abs(metres) < 1e-9 ? 0.0 : metres * 1e3; }
 
 // How far the collision surface (#V by 3) reaches below the drawn one
 // (#V by 3) along `up` (unit), m: what a body at rest floats above the ground.
@@ -99,8 +104,8 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
     if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
     if (row.contains("collision_triangles") && row["collision_triangles"] != row["surface_triangles"])
       text << " (collision " << row["collision_triangles"] << ", offset outward by up to "
-           << row["collision_offset"].get<double>() * 1e3 << " mm, " << row["collision_below"].get<double>() * 1e3
-           << " mm below it)";
+           << millimetres(row["collision_offset"].get<double>()) << " mm, "
+           << millimetres(row["collision_below"].get<double>()) << " mm below it)";
     if (row.contains("tets"))
       text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes";
     if (row.contains("mass")) text << ", mass " << row["mass"].get<double>() << " kg";

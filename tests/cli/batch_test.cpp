@@ -426,6 +426,17 @@ TEST(BatchCommand, WhatRunsNothingRefusesTheOptionsOfARun) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// The default output folder is named after the source, a folder given with
+// a trailing slash included (it used to be output/ itself).
+TEST(BatchCommand, AFolderGivenWithASlashNamesItsOutputFolder) {
+  const fs::path dir = scratch_dir("batch_slash") / "shapes";
+  fs::create_directories(dir);
+  fs::copy_file(kModels / "OFF/Cube.off", dir / "Cube.off");
+  const CommandResult r = run_recoil("batch " + shell_quote(dir.string() + "/") + " --list");
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  EXPECT_NE(r.out.find("-o output/shapes/Cube"), std::string::npos) << r.out;
+}
+
 TEST(BatchCommand, ContactSheetIsRebuiltFromFinishedOutputsAlone) {
   const fs::path dir = scratch_dir("batch_sheet");
   const fs::path manifest = cube_manifest(dir, 3);
