@@ -138,6 +138,10 @@ BatchItem to_item(const JsonCursor& entry, const nlohmann::json& defaults, const
       std::vector<std::string> candidates = known;
       candidates.insert(candidates.end(), kItemKeys.begin(), kItemKeys.end());
       const std::string suggestion = near_miss(key, candidates);
+      // A key the entry does not set came from --set, which is where the mistake is.
+      if (!entry.has(key))
+        item.fail("--set " + key + ": `recoil " + out.mode + "` has no option --" + key +
+                  "; set it in the manifest on the items that take it");
       field.fail("`recoil " + out.mode + "` has no option --" + key +
                  (suggestion.empty() ? "" : "; did you mean \"" + suggestion + "\"?"));
     }

@@ -327,6 +327,11 @@ TEST(BatchCommand, ManifestErrorsNameTheItemAndTheFieldBeforeAnythingRuns) {
   EXPECT_NE(e.find("/0:"), std::string::npos) << e;
   e = error_for(json::object({{"mesh", cube}}));
   EXPECT_NE(e.find("JSON list"), std::string::npos) << e;
+  // An option only some commands take, given to all by --set, is blamed on --set.
+  write_text(dir / "m.json", json::array({ok}).dump());
+  const CommandResult set = run_recoil("batch " + shell_quote(dir / "m.json") + " --set seconds=0.3 --list");
+  EXPECT_EQ(set.exit_code, 2);
+  EXPECT_NE(set.err.find("/0: --set seconds: `recoil turntable` has no option --seconds"), std::string::npos) << set.err;
 }
 
 // Items that only their run would refuse (a missing file, a value the command
