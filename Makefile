@@ -25,8 +25,8 @@ build: deps $(BUILD)/CMakeCache.txt
 
 # The demo: a soft bunny dropped next to a crate, 3 s at 30 fps, 1280x720.
 demo: build
-	$(BUILD)/recoil run assets/scenes/bunny-drop.json -o output/bunny-drop
-	@echo "frames written to output/bunny-drop/"
+	$(BUILD)/recoil run assets/scenes/bunny-drop.json -o output/demo
+	@echo "frames written to output/demo/"
 
 # Builds what the suite runs (the CLI and the test executables), not the
 # benchmarks: `make test` must stay well inside 10 minutes on 2 cores.
