@@ -16,6 +16,7 @@
 #include <thread>
 
 #include "render/png.h"
+#include "tests/cli/json_lines.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -31,11 +32,8 @@ json read_json(const fs::path& path) { return json::parse(file_bytes(path)); }
 // The "event": "item" lines of a --log-json run.
 std::vector<json> item_events(const std::string& err) {
   std::vector<json> events;
-  std::istringstream lines(err);
-  for (std::string line; std::getline(lines, line);) {
-    const json j = json::parse(line, nullptr, false);
+  for (const json& j : json_lines(err))
     if (j.is_object() && j.value("event", "") == "item") events.push_back(j);
-  }
   return events;
 }
 

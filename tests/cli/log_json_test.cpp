@@ -2,10 +2,8 @@
 // failure included, and a long settle shows life as "working" lines.
 #include <gtest/gtest.h>
 
-#include <nlohmann/json.hpp>
-#include <sstream>
-
 #include "tests/cli/box_mesh_file.h"
+#include "tests/cli/json_lines.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -15,14 +13,9 @@ using nlohmann::json;
 namespace {
 
 // Every line of `err` parsed; a line that is not a JSON object fails the test.
-std::vector<json> json_lines(const std::string& err) {
-  std::vector<json> lines;
-  std::istringstream in(err);
-  for (std::string line; std::getline(in, line);) {
-    const json j = json::parse(line, nullptr, false);
-    EXPECT_TRUE(j.is_object()) << "not a JSON line: " << line;
-    if (j.is_object()) lines.push_back(j);
-  }
+std::vector<json> objects(const std::string& err) {
+  std::vector<json> lines = json_lines(err);
+  for (const json& line : lines) EXPECT_TRUE(line.is_object()) << "not a JSON object line in:\n" << err;
   return lines;
 }
 
@@ -32,7 +25,7 @@ TEST(LogJson, AFailureIsAJsonLineWithItsExitCode) {
   const fs::path dir = scratch_dir("log_json_failure");
   const CommandResult r = run_recoil("--log-json drop " + shell_quote(dir / "missing.obj") + " -o " + shell_quote(dir / "out"));
   EXPECT_EQ(r.exit_code, 2);
-  const std::vector<json> lines = json_lines(r.err);
+  const std::vector<json> lines = objects(r.err);
   ASSERT_FALSE(lines.empty()) << r.err;
   EXPECT_EQ(lines.back()["event"], "error");
   EXPECT_EQ(lines.back()["exit_code"], 2);
@@ -47,7 +40,7 @@ TEST(LogJson, SettlingReportsWorkingLines) {
                                      "--msaa 0 --log-json -o " + shell_quote(dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   bool settling = false;
-  for (const json& line : json_lines(r.err))
+  for (const json& line : objects(r.err))
     if (line.value("event", "") == "working")
       settling = settling || line["detail"].get<std::string>().find("settling") != std::string::npos;
   EXPECT_TRUE(settling) << r.err;

@@ -8,6 +8,7 @@
 #include <sstream>
 
 #include "tests/cli/box_mesh_file.h"
+#include "tests/cli/json_lines.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -58,11 +59,8 @@ TEST(MeshCommandOptions, TheBuildIsAStageAndOneFrameIsOneFrame) {
   const CommandResult logged = run_recoil("drop " + shell_quote(box) + " --seconds 0.01 --no-render --log-json -o " +
                                           shell_quote(dir / "logged"));
   ASSERT_EQ(logged.exit_code, 0) << logged.err;
-  std::istringstream lines(logged.err);
-  std::string line;
   std::vector<std::string> events;
-  while (std::getline(lines, line)) {
-    const json j = json::parse(line, nullptr, false);
+  for (const json& j : json_lines(logged.err)) {
     if (j.is_object() && j.contains("event")) events.push_back(j["event"]);
     if (j.value("event", "") == "stage") {
       EXPECT_EQ(j["stage"], "building 1 body, 12 triangles");

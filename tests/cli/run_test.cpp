@@ -11,6 +11,7 @@
 
 #include "render/png.h"
 #include "tests/cli/box_mesh_file.h"
+#include "tests/cli/json_lines.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -19,13 +20,7 @@ using nlohmann::json;
 
 namespace {
 
-std::vector<json> read_stats(const fs::path& path) {
-  std::vector<json> lines;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) lines.push_back(json::parse(line));
-  return lines;
-}
+std::vector<json> read_stats(const fs::path& path) { return json_lines(file_bytes(path)); }
 
 // Stats with the wall-clock fields removed (they differ between runs).
 json without_timings(json line) {

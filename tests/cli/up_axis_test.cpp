@@ -11,6 +11,7 @@
 
 #include "cli/up_axis.h"
 #include "tests/cli/box_mesh_file.h"
+#include "tests/cli/json_lines.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -31,13 +32,7 @@ fs::path write_tall_y(const fs::path& dir) {
                        [&](const Eigen::Vector3d& p) { return Eigen::Vector3d(r * p); });
 }
 
-std::vector<json> up_test_stats(const fs::path& path) {
-  std::vector<json> lines;
-  std::ifstream in(path);
-  std::string line;
-  while (std::getline(in, line)) lines.push_back(json::parse(line));
-  return lines;
-}
+std::vector<json> up_test_stats(const fs::path& path) { return json_lines(file_bytes(path)); }
 
 }  // namespace
 
