@@ -122,6 +122,15 @@ void report_item(const ItemRecord& r, const GlobalOptions& global) {
   }
 }
 
+// The record of `item` when an earlier run finished it with its present
+// command line; nothing when it is still to run.
+std::optional<ItemRecord> finished_record(const fs::path& output, const BatchItem& item) {
+  std::optional<ItemRecord> record = read_item_record(output / item.name);
+  if (!record || !record->succeeded() || !records_item(*record, item)) return std::nullopt;
+  record->reused = true;
+  return record;
+}
+
 }  // namespace
 
 std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, const BatchRunOptions& options,
@@ -131,13 +140,8 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
   std::deque<const BatchItem*> todo;
   for (const BatchItem& item : items) {
     if (!options.shard.keeps(item.index)) continue;
-    const std::optional<ItemRecord> done = read_item_record(options.output / item.name);
-    if (done && done->succeeded() && records_item(*done, item)) {
-      records[item.index] = *done;
-      records[item.index].reused = true;
-    } else {
-      todo.push_back(&item);
-    }
+    if (const std::optional<ItemRecord> done = finished_record(options.output, item)) records[item.index] = *done;
+    else todo.push_back(&item);
   }
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
@@ -161,10 +165,8 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
         continue;
       }
       held = 0;
-      if (const std::optional<ItemRecord> r = read_item_record(options.output / item.name);
-          r && r->succeeded() && records_item(*r, item)) {
+      if (const std::optional<ItemRecord> r = finished_record(options.output, item)) {
         records[item.index] = *r;
-        records[item.index].reused = true;
         progress.update(++done);
         continue;
       }
