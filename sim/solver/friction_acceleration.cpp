@@ -28,14 +28,12 @@ Eigen::VectorXd FrictionAcceleration::next(const std::vector<int>& members, cons
   RECOIL_CHECK(mixing > 0.0 && mixing <= 1.0, "mixing " << mixing);
   RECOIL_CHECK(x.size() == g.size() && x.size() == weights.size() &&
                x.size() == 2 * static_cast<Eigen::Index>(members.size()));
-  if (members != m_members) reset();
-  m_members = members;
   Eigen::VectorXd f = g - x;
   wrap_angles(f);
-  if (!m_f.empty() && weights.cwiseProduct(f).norm() > weights.cwiseProduct(m_f.back()).norm()) {
-    reset();
-    m_members = members;
-  }
+  const bool same = members == m_members;  // the remembered residuals are of these contacts
+  const bool grew = same && !m_f.empty() && weights.cwiseProduct(f).norm() > weights.cwiseProduct(m_f.back()).norm();
+  if (!same || grew) reset();
+  m_members = members;
   m_x.push_back(x);
   m_f.push_back(f);
   if (static_cast<int>(m_f.size()) > kDepth) {
