@@ -173,6 +173,9 @@ std::string difference_from_saved_scene(const fs::path& saved, const nlohmann::j
 RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const auto start = Clock::now();
   const SceneDesc& scene = job.scene;
+  // First: a scene of a billion frames must be refused before its frame list is made.
+  check_work_limits(scene, job.frames.empty() ? scene.frame_count() : job.frames.back(), job.render,
+                    memory_limit_bytes(global.max_memory_gib));
   const double fps = scene.render.fps, dt = scene.world.dt;
   const std::vector<int> selected = job.frames.empty() ? all_frames(scene.frame_count()) : job.frames;
   const int last_frame = selected.back();
@@ -181,7 +184,6 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
                     std::to_string(scene.frame_count()) + " (simulation.duration " +
                     format_number("%g", scene.duration) + " s at render.fps " + format_number("%g", fps) +
                     "); lengthen the duration to draw it (drop: --seconds; turntable: --turn-frames)");
-  check_work_limits(scene, last_frame, job.render, memory_limit_bytes(global.max_memory_gib));
   // Frame names keep their width whatever subset is rendered.
   const int name_count = scene.frame_count();
   if (!job.video.empty()) {
