@@ -45,16 +45,25 @@ void switch_off(Proposal& p, double violation) {
   p.violation = violation;
 }
 
-// Algorithm 2, lines 7-8 (seed): a penetrating inactive contact is activated,
+// Algorithm 2, lines 7-8 (seed): a penetrating inactive contact is activated
 // in kinetic friction, its slip along the tangential velocity u (none yet
-// when u is below epsilon_2).
-Proposal activate(const ContactState& s, const ContactTrack& track, const Eigen::Vector3d& f, double slack,
-                  const Eigen::Vector2d& u, const Evaluation& e) {
+// when u is below epsilon_2), unless its two sides were at rest relative to
+// each other when the step began (-rhs_tangent, the slip at dv = 0, below
+// epsilon_2): static friction holds such a contact, so it comes on sticking
+// and the converged evaluation's cone test decides whether it breaks away.
+// Activated sliding, a body set down at rest on a slope steeper than mu_k
+// but within mu_s slid, since only a reversed slip makes a contact stick.
+Proposal activate(const ContactRows& rows, const ContactState& s, const ContactTrack& track,
+                  const Eigen::Vector3d& f, double slack, const Eigen::Vector2d& u, const Evaluation& e) {
   Proposal p = unchanged(s, track, f);
-  p.state.mode = ContactMode::sliding;
-  p.state.lambda_kinetic = 0.0;
-  const double speed = u.norm();
-  p.state.slip = speed > e.eps2 ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
+  if (rows.mu_static > 0.0 && rows.rhs_tangent.norm() <= e.eps2) {
+    p.state.mode = ContactMode::sticking;
+  } else {
+    p.state.mode = ContactMode::sliding;
+    p.state.lambda_kinetic = 0.0;
+    const double speed = u.norm();
+    p.state.slip = speed > e.eps2 ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
+  }
   p.f.setZero();
   p.mode_change = p.accept = true;
   p.violation = -slack;
@@ -77,6 +86,7 @@ void update_static_friction(const ContactRows& rows, const Eigen::Vector2d& u, c
   p.state.mode = ContactMode::sliding;
   p.state.slip = norm > 0.0 ? Eigen::Vector2d(-gamma / norm) : Eigen::Vector2d::Zero();
   p.state.lambda_kinetic = std::max(lambda, 0.0);
+  p.state.impending = rows.mu_static > rows.mu_kinetic;
   p.state.gamma.setZero();
   p.f.tail<2>().setZero();
   p.mode_change = p.accept = true;
@@ -97,7 +107,8 @@ bool reverses(const ContactRows& rows, const ContactState& s, const Eigen::Vecto
   const bool can_stick = rows.mu_static > 0.0;
   if (!can_stick || !reversed) return false;
   p.state.mode = ContactMode::sticking;
-  p.f.tail<2>() = -rows.mu_kinetic * s.lambda_kinetic * s.slip;
+  p.f.tail<2>() = tangent_impulse(rows, s);
+  p.state.impending = false;
   p.state.lambda_kinetic = 0.0;
   p.state.slip.setZero();
   p.mode_change = p.accept = true;
@@ -113,7 +124,7 @@ void direct_slip(const ContactRows& rows, const Eigen::Vector2d& u, double w_t, 
   const double speed = u.norm();
   const bool directed = speed > e.eps2;
   if (directed) p.state.slip = u / speed;
-  p.accept = directed || rows.mu_kinetic * w_t * std::abs(lambda - p.state.lambda_kinetic) > e.eps2;
+  p.accept = directed || sliding_mu(rows, p.state) * w_t * std::abs(lambda - p.state.lambda_kinetic) > e.eps2;
   p.state.lambda_kinetic = lambda;
 }
 
@@ -144,8 +155,14 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   }
   if (!e.converged) return p;  // u is not yet trustworthy
   if (!frozen && reverses(rows, s, u, e, p)) return p;  // lines 14-16
+  if (s.impending && u.norm() > e.eps2) {  // its slip has started: kinetic friction from now on
+    p.state.impending = false;
+    p.mode_change = p.accept = true;
+    p.violation = u.norm();
+    return p;
+  }
   // Line 17, frozen or not: a directed slip moves with every other one (update_kinetic_friction).
-  if (rows.mu_kinetic > 0.0 && s.slip.squaredNorm() == 0.0) direct_slip(rows, u, w_t, e, p);
+  if (sliding_mu(rows, s) > 0.0 && s.slip.squaredNorm() == 0.0) direct_slip(rows, u, w_t, e, p);
   return p;
 }
 
@@ -217,18 +234,19 @@ void update_kinetic_friction(const ContactProblem& problem, const std::vector<Co
   for (size_t k = 0; k < problem.states.size(); ++k) {
     const ContactState& s = problem.states[k];
     const ContactRows& rows = problem.rows[k];
-    if (s.mode != ContactMode::sliding || s.slip.squaredNorm() == 0.0 || rows.mu_kinetic <= 0.0 ||
+    const double mu = sliding_mu(rows, s);
+    if (s.mode != ContactMode::sliding || s.slip.squaredNorm() == 0.0 || mu <= 0.0 ||
         rows.nodes.empty() || std::binary_search(changing.begin(), changing.end(), static_cast<int>(k)))
       continue;
     const double w_t = std::max(tracks[k].w[1], tracks[k].w[2]);
     const Eigen::Vector2d& u = tangential[k];
-    const Eigen::Vector2d target = u + w_t * rows.mu_kinetic * s.lambda_kinetic * s.slip;
+    const Eigen::Vector2d target = u + w_t * mu * s.lambda_kinetic * s.slip;
     const Eigen::Vector2d aim = target.squaredNorm() > 0.0 ? target : s.slip;
     const double lambda = std::max(y[n + 3 * static_cast<Eigen::Index>(k)], 0.0);
     members.push_back(static_cast<int>(k));
     x.insert(x.end(), {s.lambda_kinetic, std::atan2(s.slip.y(), s.slip.x())});
     g.insert(g.end(), {lambda, std::atan2(aim.y(), aim.x())});
-    weights.insert(weights.end(), {rows.mu_kinetic * w_t, rows.mu_kinetic * w_t * s.lambda_kinetic});
+    weights.insert(weights.end(), {mu * w_t, mu * w_t * s.lambda_kinetic});
     const double turn = std::remainder(g.back() - x.back(), 2.0 * std::numbers::pi);
     worst = std::max({worst, weights[weights.size() - 2] * std::abs(lambda - s.lambda_kinetic),
                       weights.back() * std::abs(turn)});
@@ -280,7 +298,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
       // let go after freezing stays off.
       const double slack = normal_row_times(rows, dv) - rows.rhs_normal;
       if (!(slack < -e.eps2) || track.locked_off) continue;  // not penetrating (a NaN slack included)
-      p = activate(s, track, f, slack, rows_times(rows, dv).tail<2>() - rows.rhs_tangent, e);
+      p = activate(rows, s, track, f, slack, rows_times(rows, dv).tail<2>() - rows.rhs_tangent, e);
     } else {
       // The selected rows' own yield counts as motion (ContactSoftness).
       const Eigen::Vector3d yield = problem.softness.yield(track.w, f, rows);

@@ -5,9 +5,12 @@
 // with its unit and the reason it exists, and
 // docs/decisions/008-contact-evaluation-rules.md gives the measurements
 // behind each value. Shares and cosines are plain numbers.
-// Two rules have no number: sticking/sliding changes and Algorithm 3 wait
-// for a converged evaluation (a half-converged iterate cycled), and a
-// contact past max_flips (ContactSolverSettings) is frozen active. Algorithm
+// Three rules have no number: sticking/sliding changes and Algorithm 3 wait
+// for a converged evaluation (a half-converged iterate cycled); a contact
+// past max_flips (ContactSolverSettings) is frozen active; and static
+// friction acts on contacts whose sides are at relative rest (one comes on
+// sticking, and one that breaks away keeps mu_static until its slip starts:
+// ContactState::impending). Algorithm
 // 3's extrapolation keeps its own depth (FrictionAcceleration::kDepth).
 
 namespace recoil::sim {

@@ -16,11 +16,12 @@
 //   the sticking rows).
 // - Sticking: J_t dv = rhs_tangent, multiplier gamma in R^2, valid while
 //   |gamma| <= mu_static * lambda.
-// - Sliding: no tangent rows; a known impulse -mu_kinetic * lambda' * slip
-//   enters the right-hand side, with `slip` the unit direction of the
-//   tangential slip J_t dv - rhs_tangent.
+// - Sliding: no tangent rows; a known impulse -mu * lambda' * slip enters
+//   the right-hand side, with `slip` the unit direction of the tangential
+//   slip J_t dv - rhs_tangent and mu = mu_static while the slip has not
+//   started (ContactState::impending), mu_kinetic once it has.
 // - The impulses applied to the DoFs: A dv = b + sum_k J_k^T f_k with
-//   f_k = [lambda, gamma] (sticking) or [lambda, -mu_kinetic lambda' slip]
+//   f_k = [lambda, gamma] (sticking) or [lambda, -mu lambda' slip]
 //   (sliding), f_k = 0 when inactive.
 #include <Eigen/Core>
 #include <array>
@@ -57,6 +58,11 @@ struct ContactState {
   Eigen::Vector2d gamma = Eigen::Vector2d::Zero();     // sticking impulse in (t1, t2), N s
   double lambda_kinetic = 0.0;                         // lambda', N s: what sliding friction is based on
   Eigen::Vector2d slip = Eigen::Vector2d::Zero();      // unit slip direction in (t1, t2); friction opposes it
+  // Sliding only: broken away from sticking, with no slip yet (u below
+  // epsilon_2). Its friction is the static limit, mu_static lambda': kinetic
+  // friction acts on a contact that slips, so one whose neighbours still
+  // hold it keeps the static share of the load.
+  bool impending = false;
 };
 
 // How far the selected rows of a contact yield, dimensionless: a selected

@@ -121,10 +121,14 @@ double normal_rows_product(const ContactRows& a, const ContactRows& b, const Mom
   return product;
 }
 
+double sliding_mu(const ContactRows& rows, const ContactState& state) {
+  return state.impending ? rows.mu_static : rows.mu_kinetic;
+}
+
 Eigen::Vector2d tangent_impulse(const ContactRows& rows, const ContactState& state) {
   switch (state.mode) {
     case ContactMode::sticking: return state.gamma;
-    case ContactMode::sliding: return -rows.mu_kinetic * state.lambda_kinetic * state.slip;
+    case ContactMode::sliding: return -sliding_mu(rows, state) * state.lambda_kinetic * state.slip;
     case ContactMode::inactive: break;
   }
   return Eigen::Vector2d::Zero();

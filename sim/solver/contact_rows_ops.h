@@ -55,8 +55,12 @@ Eigen::Matrix3d contact_block(const ContactRows& rows, const MomentumPreconditio
 // effective_inverse_mass(a)[0]).
 double normal_rows_product(const ContactRows& a, const ContactRows& b, const MomentumPreconditioner& P);
 
+// The friction coefficient of a sliding contact: mu_static while its slip
+// has not started (ContactState::impending), mu_kinetic after.
+double sliding_mu(const ContactRows& rows, const ContactState& state);
+
 // The friction impulse (t1, t2) that `state` applies: gamma when sticking,
-// -mu_kinetic lambda' slip when sliding, 0 when inactive.
+// -sliding_mu lambda' slip when sliding, 0 when inactive.
 Eigen::Vector2d tangent_impulse(const ContactRows& rows, const ContactState& state);
 
 // How far a sliding contact's friction direction `slip` (unit, or zero) is

@@ -52,7 +52,8 @@ void hand_back_states(ContactProblem& problem, const std::vector<ContactTrack>& 
       ++stats.frozen;
       if (frozen_violation(rows, s, track, dv) > settings.constraint_tolerance) stats.converged = false;
     }
-    if (s.mode == ContactMode::sticking) {
+    // An impending contact holds at zero slip: it sticks at the cone's rim.
+    if (s.mode == ContactMode::sticking || s.impending) {
       ++stats.sticking;
     } else {
       ++stats.sliding;

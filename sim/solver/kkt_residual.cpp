@@ -13,11 +13,14 @@ double KktResidual::max() const { return std::max({momentum, penetration, comple
 namespace {
 
 // Coulomb's law for a sliding contact, as a velocity: the impulse must be
-// mu_k lambda opposite the slip u (direction error: contact_rows_ops.h).
+// mu lambda opposite the slip u (direction error: contact_rows_ops.h), mu
+// the static coefficient while the slip has not started.
 double sliding_violation(const ContactRows& rows, const ContactState& s, const Eigen::Vector2d& u, double w_t) {
-  double err = rows.mu_kinetic * std::abs(s.lambda_kinetic - s.lambda) * w_t;
-  if (rows.mu_kinetic > 0.0 && s.lambda > 0.0)
-    err = std::max(err, slip_direction_error(rows.mu_kinetic * s.lambda * w_t, u, s.slip));
+  const double mu = sliding_mu(rows, s);
+  double err = mu * std::abs(s.lambda_kinetic - s.lambda) * w_t;
+  if (s.impending) err = std::max(err, u.norm());
+  if (mu > 0.0 && s.lambda > 0.0)
+    err = std::max(err, slip_direction_error(mu * s.lambda * w_t, u, s.slip));
   return err;
 }
 
