@@ -1,5 +1,6 @@
 #include "sim/rigid/rigid_body.h"
 
+#include <Eigen/Eigenvalues>
 #include <cmath>
 
 #include "core/error.h"
@@ -99,6 +100,29 @@ RigidPose advance_pose(const RigidPose& pose, const Eigen::Vector3d& velocity, c
   out.center = pose.center + h * velocity;
   out.orientation = (from_rotation_vector(h * angular_velocity) * pose.orientation).normalized();
   return out;
+}
+
+Eigen::Quaterniond advance_free_rotation(const Eigen::Quaterniond& orientation, const Eigen::Matrix3d& inertia,
+                                         const Eigen::Vector3d& L, double h) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(inertia);
+  Eigen::Matrix3d Q = principal.eigenvectors();  // principal axes in the body frame, as columns
+  if (Q.determinant() < 0.0) Q.col(2) = -Q.col(2);
+  const Eigen::Vector3d moments = principal.eigenvalues();  // kg m^2
+  Eigen::Matrix3d P = orientation.toRotationMatrix() * Q;  // principal frame -> world
+  Eigen::Vector3d m = P.transpose() * L;                   // L in the principal frame
+  // Turning about principal axis i keeps m_i and so its share m_i^2 / (2 I_i)
+  // of the energy: that part of the motion is a rotation at m_i / I_i rad/s.
+  const auto turn = [&](int i, double t) {
+    const Eigen::Matrix3d G = Eigen::AngleAxisd(t * m[i] / moments[i], Eigen::Vector3d::Unit(i)).toRotationMatrix();
+    P = P * G;
+    m = G.transpose() * m;
+  };
+  turn(0, 0.5 * h);
+  turn(1, 0.5 * h);
+  turn(2, h);
+  turn(1, 0.5 * h);
+  turn(0, 0.5 * h);
+  return Eigen::Quaterniond(P * Q.transpose()).normalized();
 }
 
 void world_points(const Points& local, const RigidPose& pose, Points& out) {

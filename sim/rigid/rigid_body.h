@@ -9,10 +9,11 @@
 // A dynamic body owns two DoF nodes in the World: the
 // linear velocity (A block m I) and the angular velocity (A block I_world =
 // R I_body R^T). Gyroscopic term: the solve is linear in omega with I_world
-// frozen at the start of the step; after the pose update omega is recomputed
-// from the angular momentum, omega = I_world(t+h)^-1 I_world(t) omega+, so a
-// free body keeps its angular momentum exactly (the effect of -omega x I omega
-// over the step) and no explicit torque can pump energy in.
+// frozen at the start of the step; the body then turns freely with the
+// angular momentum L = I_world(t) omega+ (advance_free_rotation) and omega is
+// recomputed from it, omega = I_world(t+h)^-1 L, so a free body keeps L
+// exactly (the effect of -omega x I omega over the step) and its energy
+// without drift.
 #include <Eigen/Core>
 #include <Eigen/Geometry>
 #include <string>
@@ -70,6 +71,16 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
 // velocity: c + h v, exp(h w) q (exact rotation, then re-normalised).
 RigidPose advance_pose(const RigidPose& pose, const Eigen::Vector3d& velocity, const Eigen::Vector3d& angular_velocity,
                        double h);
+
+// The orientation after h seconds of torque-free rotation with world
+// angular momentum L (kg m^2/s), `inertia` the body-frame tensor (kg m^2):
+// the symmetric splitting of the free rigid body into turns about its
+// principal axes, each exact (axis 1 for h/2, 2 for h/2, 3 for h, 2, 1).
+// It keeps L exactly and the kinetic energy within O(h^2) of its start,
+// without drift; turning the whole step about the step's first angular
+// velocity, exp(h I^-1 L), gained 78% of a tumbling box's energy in 10 s.
+Eigen::Quaterniond advance_free_rotation(const Eigen::Quaterniond& orientation, const Eigen::Matrix3d& inertia,
+                                         const Eigen::Vector3d& L, double h);
 
 // World positions of body-frame points `local` (#V by 3) at `pose`. out: #V by 3.
 void world_points(const Points& local, const RigidPose& pose, Points& out);
