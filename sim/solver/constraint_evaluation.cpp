@@ -45,25 +45,20 @@ void switch_off(Proposal& p, double violation) {
   p.violation = violation;
 }
 
-// Algorithm 2, lines 7-8 (seed): a penetrating inactive contact is activated
+// Whether a contact's two sides were at rest relative to each other as the
+// step began: its slip at dv = 0, -rhs_tangent, is below epsilon_2.
+bool at_rest(const ContactRows& rows, const Evaluation& e) { return rows.rhs_tangent.norm() <= e.eps2; }
+
+// Algorithm 2, lines 7-8 (seed): a penetrating inactive contact is activated,
 // in kinetic friction, its slip along the tangential velocity u (none yet
-// when u is below epsilon_2), unless its two sides were at rest relative to
-// each other when the step began (-rhs_tangent, the slip at dv = 0, below
-// epsilon_2): static friction holds such a contact, so it comes on sticking
-// and the converged evaluation's cone test decides whether it breaks away.
-// Activated sliding, a body set down at rest on a slope steeper than mu_k
-// but within mu_s slid, since only a reversed slip makes a contact stick.
+// when u is below epsilon_2, or when its sides were at rest: reverses()).
 Proposal activate(const ContactRows& rows, const ContactState& s, const ContactTrack& track,
                   const Eigen::Vector3d& f, double slack, const Eigen::Vector2d& u, const Evaluation& e) {
   Proposal p = unchanged(s, track, f);
-  if (rows.mu_static > 0.0 && rows.rhs_tangent.norm() <= e.eps2) {
-    p.state.mode = ContactMode::sticking;
-  } else {
-    p.state.mode = ContactMode::sliding;
-    p.state.lambda_kinetic = 0.0;
-    const double speed = u.norm();
-    p.state.slip = speed > e.eps2 ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
-  }
+  p.state.mode = ContactMode::sliding;
+  p.state.lambda_kinetic = 0.0;
+  const double speed = u.norm();
+  p.state.slip = speed > e.eps2 && !at_rest(rows, e) ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
   p.f.setZero();
   p.mode_change = p.accept = true;
   p.violation = -slack;
@@ -97,13 +92,18 @@ void update_static_friction(const ContactRows& rows, const Eigen::Vector2d& u, c
 // (policy.reversal) sticks, its kinetic impulse becoming the static one. A
 // slip turned less is a direction to follow: with an anisotropic W_tt the
 // slip near the cone's rim points askew to the impulse until the direction
-// has converged. An undirected slip sticks once u is below epsilon_2.
+// has converged. An undirected slip (activated without one) sticks once u is
+// below epsilon_2, or when its two sides were at rest relative to each other
+// as the step began (-rhs_tangent, the slip at dv = 0, below epsilon_2):
+// static friction holds such a contact until the cone test lets it break
+// away. Directed along u instead, a body set down at rest on a slope
+// steeper than mu_k but within mu_s slid, since it never reversed.
 bool reverses(const ContactRows& rows, const ContactState& s, const Eigen::Vector2d& u, const Evaluation& e,
               Proposal& p) {
   const bool undirected = s.slip.squaredNorm() == 0.0;
   const double speed = u.norm();
-  const bool reversed =
-      undirected ? speed <= e.eps2 : (u.dot(s.slip) < -e.eps2 && u.dot(s.slip) < -e.policy.reversal * speed);
+  const bool reversed = undirected ? speed <= e.eps2 || at_rest(rows, e)
+                                   : (u.dot(s.slip) < -e.eps2 && u.dot(s.slip) < -e.policy.reversal * speed);
   const bool can_stick = rows.mu_static > 0.0;
   if (!can_stick || !reversed) return false;
   p.state.mode = ContactMode::sticking;

@@ -9,7 +9,8 @@
 // for a converged evaluation (a half-converged iterate cycled); a contact
 // past max_flips (ContactSolverSettings) is frozen active; and static
 // friction acts on contacts whose sides are at relative rest (one comes on
-// sticking, and one that breaks away keeps mu_static until its slip starts:
+// without a slip direction and sticks at the converged evaluation, and one
+// that breaks away keeps mu_static until its slip starts:
 // ContactState::impending). Algorithm
 // 3's extrapolation keeps its own depth (FrictionAcceleration::kDepth).
 
