@@ -11,8 +11,8 @@
 // friction acts on contacts whose sides are at relative rest (one comes on
 // without a slip direction and sticks at the converged evaluation, and one
 // that breaks away keeps mu_static until its slip starts:
-// ContactState::impending). Algorithm
-// 3's extrapolation keeps its own depth (FrictionAcceleration::kDepth).
+// ContactState::impending). Algorithm 3's extrapolation keeps its own depth
+// (FrictionAcceleration::kDepth).
 
 namespace recoil::sim {
 
