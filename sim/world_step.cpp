@@ -255,7 +255,7 @@ void World::integrate() {
     const int n = body.linear_node;
     const Eigen::Vector3d momentum = body.world_inertia() * m_v.segment<3>(3 * n + 3);  // L = I(t) w+
     body.pose.center += m_dt * m_v.segment<3>(3 * n);
-    body.pose.orientation = advance_free_rotation(body.pose.orientation, body.inertia, momentum, m_dt);
+    body.pose.orientation = advance_free_rotation(body.pose.orientation, body.principal, momentum, m_dt);
     // Gyroscopic effect: keep L with the turned inertia, w = I(t+h)^-1 L.
     m_v.segment<3>(3 * n + 3) = body.world_inertia().ldlt().solve(momentum);
   }

@@ -71,6 +71,7 @@ RigidBody build_rigid_body(const RigidBodyDesc& desc, EmbreeDevice& device, cons
                               : std::string("the surface encloses no volume")));
     body.mass = props.mass;
     body.inertia = props.inertia;
+    body.principal = principal_inertia(props.inertia);
     reference = props.center;
     // Initial velocity is given for the reference point of the description
     // (transform.position); the centre of mass moves with v + w x (c - p).
@@ -102,12 +103,19 @@ RigidPose advance_pose(const RigidPose& pose, const Eigen::Vector3d& velocity, c
   return out;
 }
 
-Eigen::Quaterniond advance_free_rotation(const Eigen::Quaterniond& orientation, const Eigen::Matrix3d& inertia,
+PrincipalInertia principal_inertia(const Eigen::Matrix3d& inertia) {
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> solver(inertia);
+  PrincipalInertia out;
+  out.axes = solver.eigenvectors();
+  if (out.axes.determinant() < 0.0) out.axes.col(2) = -out.axes.col(2);
+  out.moments = solver.eigenvalues();
+  return out;
+}
+
+Eigen::Quaterniond advance_free_rotation(const Eigen::Quaterniond& orientation, const PrincipalInertia& inertia,
                                          const Eigen::Vector3d& L, double h) {
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(inertia);
-  Eigen::Matrix3d Q = principal.eigenvectors();  // principal axes in the body frame, as columns
-  if (Q.determinant() < 0.0) Q.col(2) = -Q.col(2);
-  const Eigen::Vector3d moments = principal.eigenvalues();  // kg m^2
+  const Eigen::Matrix3d& Q = inertia.axes;
+  const Eigen::Vector3d& moments = inertia.moments;
   Eigen::Matrix3d P = orientation.toRotationMatrix() * Q;  // principal frame -> world
   Eigen::Vector3d m = P.transpose() * L;                   // L in the principal frame
   // Turning about principal axis i keeps m_i and so its share m_i^2 / (2 I_i)

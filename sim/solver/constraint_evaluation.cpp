@@ -96,8 +96,8 @@ void update_static_friction(const ContactRows& rows, const Eigen::Vector2d& u, c
 // below epsilon_2, or when its two sides were at rest relative to each other
 // as the step began (-rhs_tangent, the slip at dv = 0, below epsilon_2):
 // static friction holds such a contact until the cone test lets it break
-// away. Directed along u instead, a body set down at rest on a slope
-// steeper than mu_k but within mu_s slid, since it never reversed.
+// away (directed along u, it could stick only by reversing, and a body at
+// rest on a slope steeper than mu_k but within mu_s would slide).
 bool reverses(const ContactRows& rows, const ContactState& s, const Eigen::Vector2d& u, const Evaluation& e,
               Proposal& p) {
   const bool undirected = s.slip.squaredNorm() == 0.0;
