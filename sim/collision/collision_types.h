@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "sim/body/body_kind.h"
+#include "sim/geometry/tet_mesh.h"
 #include "sim/geometry/tri_mesh.h"
 
 namespace recoil::sim {
@@ -28,6 +29,14 @@ struct CollisionSurface {
   // triangles, a narrow gap) and the elasticity, not a constraint, keeps it;
   // a pair within the margin at rest is never a contact.
   const Points* rest = nullptr;
+  // Optional with self_contact, for a surface embedded in a tet lattice: the
+  // element each vertex moves with (#V, into `elements`) and the elements'
+  // nodes (#T by 4). Two primitives whose elements share a node come
+  // together only as those elements strain, which their elasticity governs:
+  // such a pair is never a contact (a contact inside the lattice's own
+  // resolution can be met only by collapsing its elements).
+  const Eigen::VectorXi* vertex_element = nullptr;
+  const Tets* elements = nullptr;
 };
 
 // An infinite static plane: points x with normal.(x - point) >= 0 are outside.

@@ -60,6 +60,10 @@ std::vector<CollisionSurface> ContactModel::collision_surfaces(const Eigen::Vect
     out[s].triangles = m_surfaces[s].triangles;
     out[s].self_contact = m_surfaces[s].self_contact;
     out[s].rest = m_surfaces[s].rest;
+    if (m_surfaces[s].embedding != nullptr) {
+      out[s].vertex_element = &m_surfaces[s].embedding->tet;
+      out[s].elements = m_surfaces[s].tets;
+    }
   }
   return out;
 }

@@ -278,6 +278,46 @@ TEST(CollisionDetector, SelfContactSkipsNeighbours) {
   EXPECT_TRUE(detector.detect({s}, {}).empty());
 }
 
+TEST(CollisionDetector, SelfContactSkipsPairsWhoseElementsShareANode) {
+  // The folded sheet of SelfContactSkipsNeighbours, embedded in a lattice:
+  // each layer's vertices move with elements of their own, or with elements
+  // that share a node with the other layer's.
+  TriMesh sheet = testing::grid(8, 0.01);
+  TriMesh upper = sheet;
+  upper.vertices.col(2).array() += 0.001;
+  upper.vertices.col(0).array() += 0.003;
+  TriMesh unfolded = sheet, beside = sheet;
+  beside.vertices.col(0).array() += 0.2;
+  append(sheet, upper);
+  append(unfolded, beside);
+  const int layer = 81;  // vertices per layer
+  Tets elements(3, 4);
+  elements << 0, 1, 2, 3,  //
+      4, 5, 6, 7,          // apart from the first
+      3, 8, 9, 10;         // sharing node 3 with the first
+  Eigen::VectorXi vertex_element(2 * layer);
+  CollisionSurface s = moving_surface(sheet, 1, BodyKind::deformable, Eigen::Vector3d::Zero());
+  s.self_contact = true;
+  s.rest = &unfolded.vertices;
+  s.vertex_element = &vertex_element;
+  s.elements = &elements;
+  auto candidates = [&](int upper_element) {
+    vertex_element.head(layer).setZero();
+    vertex_element.tail(layer).setConstant(upper_element);
+    CollisionDetector detector({0.002, 1});  // a fresh one: a detector reuses its last search for the same positions
+    const auto found = detector.detect({s}, {});
+    testing::expect_same_candidates(found, brute_force_candidates({s}, {}, {0.002, 1}), 1e-9);
+    return found.size();
+  };
+  const size_t apart = candidates(1);
+  EXPECT_GT(apart, 0u);
+  s.vertex_element = nullptr;
+  EXPECT_EQ(CollisionDetector({0.002, 1}).detect({s}, {}).size(), apart) << "elements apart must change nothing";
+  s.vertex_element = &vertex_element;
+  EXPECT_EQ(candidates(2), 0u) << "the layers' elements share a node";
+  EXPECT_EQ(candidates(0), 0u) << "both layers in one element";
+}
+
 TEST(CollisionDetector, SelfContactCountsOnlyWhatDeformationClosed) {
   // Two layers of one surface that lie 2.5 mm apart at rest, just past the
   // 2 mm margin (a narrow modelled gap, or neighbours on a fine mesh). A pair
