@@ -127,6 +127,7 @@ BatchItem to_item(const JsonCursor& entry, const nlohmann::json& defaults, const
 
   out.args = {out.mode};
   out.args.insert(out.args.end(), inputs.begin(), inputs.end());
+  out.inputs = inputs;
   for (const auto& [key, value] : merged.items()) {
     if (std::find(kItemKeys.begin(), kItemKeys.end(), key) != kItemKeys.end()) continue;
     const JsonCursor field = item.child(key);

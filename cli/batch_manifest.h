@@ -14,6 +14,7 @@ struct BatchItem {
   std::string name;               // the item's output folder name, unique within the batch
   std::string mode;               // "run", "turntable" or "drop"
   std::vector<std::string> args;  // the command line after `recoil`, without -o
+  std::vector<std::string> inputs;  // the scene or mesh files it reads, as in `args`
 };
 
 // Reads `source` (a manifest file, or a folder: every mesh file in it, as a

@@ -1,5 +1,6 @@
 #include "cli/batch_record.h"
 
+#include <chrono>
 #include <fstream>
 #include <nlohmann/json.hpp>
 
@@ -7,6 +8,46 @@
 
 namespace recoil::cli {
 namespace fs = std::filesystem;
+
+namespace {
+
+InputStamp stamp(const fs::path& file) {
+  InputStamp out;
+  out.path = file.string();
+  std::error_code ec;
+  const auto size = fs::file_size(file, ec);
+  if (ec) return out;
+  const auto time = fs::last_write_time(file, ec);
+  if (ec) return out;
+  out.size = static_cast<long long>(size);
+  out.mtime_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(time.time_since_epoch()).count();
+  return out;
+}
+
+// The mesh files a scene file names, resolved against its folder as the
+// scene reader does; none when it cannot be read (the item then fails on it).
+std::vector<fs::path> scene_meshes(const fs::path& scene) {
+  std::ifstream in(scene);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  std::vector<fs::path> out;
+  if (!j.is_object() || !j.contains("bodies") || !j["bodies"].is_array()) return out;
+  for (const nlohmann::json& body : j["bodies"])
+    if (body.is_object() && body.contains("mesh") && body["mesh"].is_string())
+      out.push_back((scene.parent_path() / body["mesh"].get<std::string>()).lexically_normal());
+  return out;
+}
+
+}  // namespace
+
+std::vector<InputStamp> input_stamps(const BatchItem& item) {
+  std::vector<InputStamp> out;
+  for (const std::string& file : item.inputs) {
+    out.push_back(stamp(file));
+    if (item.mode == "run")
+      for (const fs::path& mesh : scene_meshes(file)) out.push_back(stamp(mesh));
+  }
+  return out;
+}
 
 std::optional<ItemRecord> read_item_record(const fs::path& item_dir) {
   std::ifstream in(item_dir / "item.json");
@@ -24,6 +65,10 @@ std::optional<ItemRecord> read_item_record(const fs::path& item_dir) {
   if (const auto command = j.find("command"); command != j.end() && command->is_array())
     for (const nlohmann::json& arg : *command)
       if (arg.is_string()) r.command.push_back(arg.get<std::string>());
+  if (const auto inputs = j.find("inputs"); inputs != j.end() && inputs->is_array())
+    for (const nlohmann::json& input : *inputs)
+      if (input.is_object())
+        r.inputs.push_back({input.value("path", ""), input.value("size", -1LL), input.value("mtime_ns", 0LL)});
   if (r.status != "succeeded" && r.status != "failed") return std::nullopt;
   return r;
 }
@@ -31,8 +76,12 @@ std::optional<ItemRecord> read_item_record(const fs::path& item_dir) {
 namespace {
 
 nlohmann::json to_json(const ItemRecord& r) {
+  nlohmann::json inputs = nlohmann::json::array();
+  for (const InputStamp& input : r.inputs)
+    inputs.push_back({{"path", input.path}, {"size", input.size}, {"mtime_ns", input.mtime_ns}});
   return {{"index", r.index},     {"name", r.name},       {"status", r.status}, {"exit_code", r.exit_code},
-          {"seconds", r.seconds}, {"message", r.message}, {"shard", r.shard},   {"command", r.command}};
+          {"seconds", r.seconds}, {"message", r.message}, {"shard", r.shard},   {"command", r.command},
+          {"inputs", inputs}};
 }
 
 }  // namespace

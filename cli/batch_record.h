@@ -10,6 +10,19 @@
 
 namespace recoil::cli {
 
+// One input file as an item found it: a changed size or modification time
+// says the file changed (as make and rsync judge it); size -1: it was missing.
+struct InputStamp {
+  std::string path;
+  long long size = -1;      // bytes
+  long long mtime_ns = 0;   // nanoseconds since the file clock's epoch
+  bool operator==(const InputStamp&) const = default;
+};
+
+// The stamps of every file `item` reads: its scene or mesh files, and the
+// mesh files its scene names (bodies/*/mesh).
+std::vector<InputStamp> input_stamps(const BatchItem& item);
+
 struct ItemRecord {
   int index = 0;
   std::string name;
@@ -19,14 +32,17 @@ struct ItemRecord {
   std::string message;  // the item's error line when it failed
   std::string shard;    // "I/N" of the process that ran it
   std::vector<std::string> command;  // the item's command line it ran (BatchItem::args)
+  std::vector<InputStamp> inputs;    // its input files as it started
   bool reused = false;  // finished by an earlier batch, not run by this one (never on disk)
   bool succeeded() const { return status == "succeeded"; }
 };
 
-// The record describes `item` as the manifest gives it now: a record of
-// another command line (the manifest or a --set changed since) is stale,
-// and its item is run again.
-inline bool records_item(const ItemRecord& record, const BatchItem& item) { return record.command == item.args; }
+// The record describes `item` as the manifest and its files give it now: a
+// record of another command line (the manifest or a --set changed since), or
+// of input files that changed since, is stale, and its item is run again.
+inline bool records_item(const ItemRecord& record, const BatchItem& item) {
+  return record.command == item.args && record.inputs == input_stamps(item);
+}
 
 // DIR/NAME/item.json when it is there and readable, else nothing.
 std::optional<ItemRecord> read_item_record(const std::filesystem::path& item_dir);

@@ -28,6 +28,7 @@ namespace {
 
 struct Running {
   const BatchItem* item;
+  std::vector<InputStamp> inputs;  // its input files as it started
   fs::path partial;
   std::chrono::steady_clock::time_point start;
   ItemLock lock;  // released once the item has stopped and its folder is in place
@@ -101,6 +102,7 @@ ItemRecord finish_item(const Running& run, int status, const Shard& shard, const
   if (r.exit_code != 0) r.message = failure_message(run.partial / "log.txt", status);
   r.shard = shard.text();
   r.command = run.item->args;
+  r.inputs = run.inputs;
   write_item_record(run.partial, r);
   const fs::path final_dir = output / run.item->name;
   remove_or_throw(final_dir);  // an earlier run's: a failure, or a success of another command line
@@ -131,11 +133,26 @@ std::optional<ItemRecord> finished_record(const fs::path& output, const BatchIte
   return record;
 }
 
+// Throws when OUT/NAME of an item this process runs is there but not a
+// batch item's folder (every one holds item.json): a finished item replaces
+// its folder, and what a user put there must not go with it.
+void check_item_folders_are_ours(const std::vector<BatchItem>& items, const BatchRunOptions& options) {
+  for (const BatchItem& item : items) {
+    const fs::path dir = options.output / item.name;
+    std::error_code ec;
+    if (!options.shard.keeps(item.index) || !fs::exists(fs::symlink_status(dir, ec))) continue;
+    if (fs::is_directory(fs::symlink_status(dir, ec)) && fs::exists(dir / "item.json")) continue;
+    throw output_error(dir.string() + " is there but was not written by recoil batch (it has no item.json); item " +
+                       std::to_string(item.index) + " would replace it: move it away, or give the item another \"name\"");
+  }
+}
+
 }  // namespace
 
 std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, const BatchRunOptions& options,
                                         const GlobalOptions& global) {
   ensure_output_dir(options.output);
+  check_item_folders_are_ours(items, options);
   std::map<int, ItemRecord> records;
   std::deque<const BatchItem*> todo;
   for (const BatchItem& item : items) {
@@ -170,11 +187,12 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
         progress.update(++done);
         continue;
       }
+      const std::vector<InputStamp> inputs = input_stamps(item);  // before it reads them
       const fs::path partial = options.output / (item.name + ".partial");
       remove_or_throw(partial);  // what a killed run left
       ensure_output_dir(partial);
       const pid_t pid = start_child(child_arguments(item, partial, threads), partial / "log.txt", threads, *lock);
-      running.emplace(pid, Running{&item, partial, std::chrono::steady_clock::now(), std::move(*lock)});
+      running.emplace(pid, Running{&item, inputs, partial, std::chrono::steady_clock::now(), std::move(*lock)});
     }
     if (pending_interrupt()) {
       for (const auto& [pid, run] : running) ::kill(pid, SIGTERM);

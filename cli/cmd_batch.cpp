@@ -1,6 +1,7 @@
 // `recoil batch MANIFEST|DIR`: many runs, turntables and drops, restartable,
 // shardable across a farm, gathered into a contact sheet.
 #include <iostream>
+#include <nlohmann/json.hpp>
 
 #include "cli/batch_manifest.h"
 #include "cli/batch_record.h"
@@ -102,12 +103,18 @@ int run_batch(const BatchOptions& options, const GlobalOptions& global) {
   }
   const std::vector<ItemRecord> all = write_batch_summary(output, source, items);
   if (!options.contact_sheet.empty()) write_contact_sheet(options.contact_sheet, output, all);
-  if (!global.quiet) {
-    int ok = 0, failed = 0, reused = 0;
-    for (const ItemRecord& r : mine) {
-      (r.succeeded() ? ok : failed)++;
-      reused += r.reused;
-    }
+  int ok = 0, failed = 0, reused = 0;
+  for (const ItemRecord& r : mine) {
+    (r.succeeded() ? ok : failed)++;
+    reused += r.reused;
+  }
+  if (global.log_json) {
+    nlohmann::json line = {{"command", "batch"}, {"event", "summary"}, {"summary", (output / "batch.json").string()},
+                           {"shard", shard.text()}};
+    if (!options.contact_sheet_only) line.update({{"succeeded", ok}, {"failed", failed}, {"reused", reused}});
+    if (!options.contact_sheet.empty()) line["contact_sheet"] = options.contact_sheet;
+    std::cerr << line.dump() << std::endl;
+  } else if (!global.quiet) {
     if (!options.contact_sheet_only)
       std::cerr << "recoil: batch: " << ok << " succeeded"
                 << (reused > 0 ? " (" + std::to_string(reused) + " finished by an earlier run)" : "") << ", "
@@ -153,9 +160,11 @@ void add_batch_command(CLI::App& app, const GlobalOptions& global, Action& actio
       "and every item is checked before the first runs. A folder means every mesh file in it, as\n"
       "turntables.\n"
       "Each item writes into OUT/NAME/ (NAME from its file, made unique: cube, cube-2) and is\n"
-      "complete once OUT/NAME/item.json says \"succeeded\" for its command line: a rerun skips\n"
-      "complete items and redoes the rest (an item whose entry or --set changed included), so a\n"
-      "killed batch loses at most the items in flight. A failed item is\n"
+      "complete once OUT/NAME/item.json says \"succeeded\" for its command line and its input\n"
+      "files: a rerun skips complete items and redoes the rest (an item whose entry or --set\n"
+      "changed, or whose scene or mesh file changed size or time since, included), so a killed\n"
+      "batch loses at most the items in flight. A folder OUT/NAME that batch did not write (no\n"
+      "item.json) is never replaced: the batch stops before running anything. A failed item is\n"
       "recorded (exit code, message) and never stops the others. OUT/batch.json lists every item;\n"
       "the exit code is 0 when all succeeded, else the largest item exit code.\n\n"
       "On a farm, each array task runs one shard: Slurm's SLURM_ARRAY_TASK_ID/COUNT are read\n"

@@ -1,5 +1,6 @@
 // `recoil batch` end to end: a folder of real meshes from assimp-testmodels,
-// restarts (after a kill -9 too), shards, manifest errors, item paths and the contact sheet.
+// restarts (after a kill -9 too, or a change of the input files), shards,
+// manifest errors, item paths, folders it did not write and the contact sheet.
 #include <gtest/gtest.h>
 #include <fcntl.h>
 #include <signal.h>
@@ -100,8 +101,9 @@ TEST(BatchCommand, RerunSkipsCompleteItemsAndRedoesPartialAndFailedOnes) {
   const fs::path manifest = cube_manifest(dir, 4);
   const std::string args = "batch " + shell_quote(manifest) + " -o " + shell_quote(dir / "out") + " --log-json";
   ASSERT_EQ(run_recoil(args).exit_code, 0);
-  // What a kill leaves: an item folder without its marker, a half-written one beside it, a failure record.
-  fs::remove(dir / "out/cube1/item.json");
+  // What a rerun redoes: an item whose marker cannot be read, what a kill
+  // leaves (a half-written folder, the finished one gone), a failure record.
+  write_text(dir / "out/cube1/item.json", "{\"status\": \"succ");
   fs::create_directories(dir / "out/cube2.partial");
   write_text(dir / "out/cube2.partial/frame_0001.png", "half");
   fs::remove_all(dir / "out/cube2");
@@ -149,6 +151,67 @@ TEST(BatchCommand, ARerunRedoesTheItemsWhoseCommandChanged) {
   EXPECT_EQ(summary["items"][1]["status"], "succeeded");
   const std::vector<std::string> command = read_json(dir / "out/cube1/item.json")["command"];
   EXPECT_NE(std::find(command.begin(), command.end(), "#ff0000"), command.end());
+}
+
+// An item is finished only for the input files it read: a mesh file, or a
+// mesh file that a scene item's scene names, changed since is run again.
+TEST(BatchCommand, ARerunRedoesTheItemsWhoseInputFilesChanged) {
+  const fs::path dir = scratch_dir("batch_inputs_changed");
+  fs::copy_file(kModels / "OFF/Cube.off", dir / "model.off");
+  fs::copy_file(kModels / "OFF/Cube.off", dir / "part.off");
+  write_text(dir / "s.json",
+             json({{"recoil", 1}, {"name", "s"}, {"simulation", {{"duration", 0.1}}},
+                   {"bodies", json::array({{{"name", "box"}, {"type", "static"}, {"mesh", "part.off"}}})}})
+                 .dump());
+  write_text(dir / "m.json", json::array({{{"mesh", "model.off"}, {"frames", "1"}, {"resolution", "64x48"}},
+                                          {{"scene", "s.json"}, {"frames", "1"}, {"resolution", "64x48"}}})
+                                 .dump());
+  const std::string args = "--log-json batch " + shell_quote(dir / "m.json") + " -o " + shell_quote(dir / "out");
+  auto ran = [&] {
+    const CommandResult r = run_recoil(args);
+    EXPECT_EQ(r.exit_code, 0) << r.err;
+    const std::vector<json> lines = json_lines(r.err);
+    for (const json& line : lines) EXPECT_TRUE(line.is_object()) << "not one JSON object per line:\n" << r.err;
+    EXPECT_TRUE(!lines.empty() && lines.back().value("event", "") == "summary") << r.err;
+    std::set<int> items;
+    for (const json& e : item_events(r.err)) items.insert(e["index"].get<int>());
+    return items;
+  };
+  EXPECT_EQ(ran(), (std::set<int>{0, 1}));
+  EXPECT_EQ(ran(), (std::set<int>{}));
+  const std::string cube = file_bytes(dir / "out/model/frame_0001.png");
+  fs::copy_file(kModels / "OFF/Wuson.off", dir / "model.off", fs::copy_options::overwrite_existing);
+  EXPECT_EQ(ran(), (std::set<int>{0}));
+  EXPECT_NE(file_bytes(dir / "out/model/frame_0001.png"), cube) << "the old mesh's frame was kept";
+  fs::copy_file(kModels / "OFF/Wuson.off", dir / "part.off", fs::copy_options::overwrite_existing);
+  EXPECT_EQ(ran(), (std::set<int>{1}));
+  EXPECT_EQ(ran(), (std::set<int>{}));
+}
+
+// Batch replaces an item's folder when the item finishes; a folder (or file)
+// of that name that batch did not write is the user's, and the batch stops
+// before running anything rather than delete it.
+TEST(BatchCommand, AFolderBatchDidNotWriteIsNeverReplaced) {
+  const fs::path dir = scratch_dir("batch_foreign_folder");
+  const fs::path manifest = cube_manifest(dir, 2);
+  fs::create_directories(dir / "out/cube1/approved");
+  write_text(dir / "out/cube1/approved/signoff.txt", "client sign-off");
+  const std::string args = "batch " + shell_quote(manifest) + " -o " + shell_quote(dir / "out");
+  const CommandResult r = run_recoil(args);
+  EXPECT_EQ(r.exit_code, 4) << r.err;
+  EXPECT_NE(r.err.find((dir / "out/cube1").string() + " is there but was not written by recoil batch"),
+            std::string::npos)
+      << r.err;
+  EXPECT_EQ(file_bytes(dir / "out/cube1/approved/signoff.txt"), "client sign-off");
+  EXPECT_FALSE(fs::exists(dir / "out/cube0")) << "nothing runs";
+  fs::remove_all(dir / "out/cube1");
+  write_text(dir / "out/cube1", "a file");
+  EXPECT_EQ(run_recoil(args).exit_code, 4);
+  EXPECT_EQ(file_bytes(dir / "out/cube1"), "a file");
+  fs::remove(dir / "out/cube1");
+  const CommandResult ours = run_recoil(args);
+  ASSERT_EQ(ours.exit_code, 0) << ours.err;
+  EXPECT_EQ(run_recoil(args).exit_code, 0) << "its own folders are replaced as before";
 }
 
 TEST(BatchCommand, KillNineAtSeveralMomentsLosesOnlyTheItemsInFlight) {

@@ -247,17 +247,26 @@ TEST(CollisionDetector, PrimitivesSlidingPastEachOtherAreNoCandidates) {
   }
 }
 
-TEST(CollisionDetector, SelfContactSkipsNeighbours) {
-  // A sheet folded over itself: two layers 1 mm apart in one deformable
-  // surface, which at rest lay side by side 0.2 m apart.
-  TriMesh sheet = testing::grid(8, 0.01);
-  TriMesh upper = sheet;
+// A sheet folded over itself: two layers (81 vertices each) 1 mm apart in
+// one deformable surface, which at rest lay side by side 0.2 m apart.
+struct FoldedSheet {
+  TriMesh sheet, unfolded;
+};
+FoldedSheet folded_sheet() {
+  FoldedSheet out{testing::grid(8, 0.01), {}};
+  TriMesh upper = out.sheet;
   upper.vertices.col(2).array() += 0.001;
   upper.vertices.col(0).array() += 0.003;
-  TriMesh unfolded = sheet, beside = sheet;
+  TriMesh beside = out.sheet;
+  out.unfolded = out.sheet;
   beside.vertices.col(0).array() += 0.2;
-  append(sheet, upper);
-  append(unfolded, beside);
+  append(out.sheet, upper);
+  append(out.unfolded, beside);
+  return out;
+}
+
+TEST(CollisionDetector, SelfContactSkipsNeighbours) {
+  const auto [sheet, unfolded] = folded_sheet();
   CollisionSurface s = moving_surface(sheet, 1, BodyKind::deformable, Eigen::Vector3d::Zero());
   s.self_contact = true;
   s.rest = &unfolded.vertices;
@@ -279,17 +288,10 @@ TEST(CollisionDetector, SelfContactSkipsNeighbours) {
 }
 
 TEST(CollisionDetector, SelfContactSkipsPairsWhoseElementsShareANode) {
-  // The folded sheet of SelfContactSkipsNeighbours, embedded in a lattice:
-  // each layer's vertices move with elements of their own, or with elements
-  // that share a node with the other layer's.
-  TriMesh sheet = testing::grid(8, 0.01);
-  TriMesh upper = sheet;
-  upper.vertices.col(2).array() += 0.001;
-  upper.vertices.col(0).array() += 0.003;
-  TriMesh unfolded = sheet, beside = sheet;
-  beside.vertices.col(0).array() += 0.2;
-  append(sheet, upper);
-  append(unfolded, beside);
+  // The folded sheet embedded in a lattice: each layer's vertices move with
+  // elements of their own, or with elements that share a node with the
+  // other layer's.
+  const auto [sheet, unfolded] = folded_sheet();
   const int layer = 81;  // vertices per layer
   Tets elements(3, 4);
   elements << 0, 1, 2, 3,  //
