@@ -24,6 +24,8 @@ namespace {
 
 // Keys that are not options of the command: what to run and what to call it.
 const std::vector<std::string> kItemKeys = {"scene", "mesh", "mode", "name"};
+// Options given before the command, for every item alike.
+const std::vector<std::string> kGlobalOptions = {"max-memory", "log-json", "quiet"};
 
 // Options whose value is a file the item writes: like its inputs, relative to the manifest.
 const std::vector<std::string> kPathOptions = {"video", "stats", "save-scene"};
@@ -135,6 +137,10 @@ BatchItem to_item(const JsonCursor& entry, const nlohmann::json& defaults, const
     const CLI::Option* option = std::find(known.begin(), known.end(), key) == known.end()
                                     ? nullptr
                                     : command->get_option_no_throw("--" + key);
+    if (!option && std::find(kGlobalOptions.begin(), kGlobalOptions.end(), key) != kGlobalOptions.end())
+      (entry.has(key) ? field : item)
+          .fail("--" + key + " is an option of recoil itself, not of `recoil " + out.mode +
+                "`: give it before the command, `recoil --" + key + " ... batch ...`");
     if (!option) {
       std::vector<std::string> candidates = known;
       candidates.insert(candidates.end(), kItemKeys.begin(), kItemKeys.end());

@@ -13,6 +13,7 @@
 #include <fstream>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <nlohmann/json.hpp>
 #include <thread>
 
@@ -34,9 +35,18 @@ struct Running {
   ItemLock lock;  // released once the item has stopped and its folder is in place
 };
 
-// The item's command line, with its output folder and its share of the cores.
-std::vector<std::string> child_arguments(const BatchItem& item, const fs::path& partial, int threads) {
-  std::vector<std::string> args = item.args;
+// The item's command line, with its output folder, its share of the cores
+// and, when the batch was given --max-memory (`memory_gib` > 0), its share of that.
+std::vector<std::string> child_arguments(const BatchItem& item, const fs::path& partial, int threads,
+                                         double memory_gib) {
+  std::vector<std::string> args;
+  if (memory_gib > 0.0) {
+    std::ostringstream cap;
+    cap.precision(17);
+    cap << std::max(memory_gib, 0.01);  // the option's least value
+    args = {"--max-memory", cap.str()};
+  }
+  args.insert(args.end(), item.args.begin(), item.args.end());
   args.insert(args.end(), {"-o", partial.string()});
   const bool takes_threads = item.mode == "run" || item.mode == "drop";
   if (takes_threads && std::find(args.begin(), args.end(), "--threads") == args.end())
@@ -191,7 +201,8 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
       const fs::path partial = options.output / (item.name + ".partial");
       remove_or_throw(partial);  // what a killed run left
       ensure_output_dir(partial);
-      const pid_t pid = start_child(child_arguments(item, partial, threads), partial / "log.txt", threads, *lock);
+      const pid_t pid = start_child(child_arguments(item, partial, threads, global.max_memory_gib / jobs),
+                                    partial / "log.txt", threads, *lock);
       running.emplace(pid, Running{&item, inputs, partial, std::chrono::steady_clock::now(), std::move(*lock)});
     }
     if (pending_interrupt()) {

@@ -214,6 +214,29 @@ TEST(BatchCommand, AFolderBatchDidNotWriteIsNeverReplaced) {
   EXPECT_EQ(run_recoil(args).exit_code, 0) << "its own folders are replaced as before";
 }
 
+// --max-memory before `batch` caps every item, shared out among the items
+// that run at once; in a manifest or a --set it is refused, naming where.
+TEST(BatchCommand, MaxMemoryIsSharedOutAmongTheItemsRunningAtOnce) {
+  const fs::path dir = scratch_dir("batch_max_memory");
+  const fs::path manifest = cube_manifest(dir, 2);
+  for (const int jobs : {1, 2}) {
+    const fs::path out = dir / ("out" + std::to_string(jobs));
+    const CommandResult r = run_recoil("--max-memory 0.04 batch " + shell_quote(manifest) + " --jobs " +
+                                       std::to_string(jobs) + " -o " + shell_quote(out));
+    EXPECT_EQ(r.exit_code, 2) << r.err;
+    const std::string allowed = jobs == 1 ? "more than the 0.04 GiB allowed" : "more than the 0.02 GiB allowed";
+    for (int i = 0; i < 2; ++i) {
+      const json item = read_json(out / ("cube" + std::to_string(i)) / "item.json");
+      EXPECT_EQ(item["exit_code"], 2);
+      EXPECT_NE(item["message"].get<std::string>().find(allowed), std::string::npos) << item["message"];
+    }
+  }
+  const CommandResult set = run_recoil("batch " + shell_quote(manifest) + " --set max-memory=1 -o " +
+                                       shell_quote(dir / "out_set"));
+  EXPECT_EQ(set.exit_code, 2);
+  EXPECT_NE(set.err.find("--max-memory is an option of recoil itself"), std::string::npos) << set.err;
+}
+
 TEST(BatchCommand, KillNineAtSeveralMomentsLosesOnlyTheItemsInFlight) {
   const fs::path dir = scratch_dir("batch_kill");
   json items = json::array();
