@@ -33,7 +33,7 @@ struct Source {
 Source load_source(const std::string& path, UpAxis up, ImportedMeshes* imported) {
   Source s;
   s.path = fs::absolute(path).lexically_normal().string();
-  s.stem = fs::path(path).stem().string();
+  s.stem = name_from_stem(fs::path(path).stem().string());
   sim::TriMesh mesh = sim::import_surface(path);
   if (imported) imported->emplace(s.path, mesh);
   apply_up(up, mesh);
@@ -148,7 +148,7 @@ nlohmann::json build_drop_scene(const DropSettings& settings, ImportedMeshes* im
     }
     list.push_back(body);
   }
-  std::string name = fs::path(settings.meshes.front()).stem().string() + (pile ? "-pile" : "-drop");
+  std::string name = name_from_stem(fs::path(settings.meshes.front()).stem().string()) + (pile ? "-pile" : "-drop");
   return {{"recoil", 1},
           {"name", name},
           {"description", "built by recoil drop"},

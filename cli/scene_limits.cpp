@@ -1,5 +1,6 @@
 #include "cli/scene_limits.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "cli/format_number.h"
@@ -23,6 +24,20 @@ std::string unsafe_name_reason(const std::string& name) {
     if (byte < 0x20 || byte == 0x7f) return "must not contain control characters";
   }
   return "";
+}
+
+std::string name_from_stem(const std::string& stem) {
+  std::string name;
+  for (const char c : stem) {
+    const auto byte = static_cast<unsigned char>(c);
+    name += byte < 0x20 || byte == 0x7f ? '_' : c;
+  }
+  size_t end = std::min(name.size(), static_cast<size_t>(kMaxNameBytes - kNameSuffixBytes));
+  // Back off UTF-8 continuation bytes (10xxxxxx) so that no character is cut in two.
+  while (end > 0 && end < name.size() && (static_cast<unsigned char>(name[end]) & 0xC0) == 0x80) --end;
+  name.resize(end);
+  if (name.empty() || name == "." || name == "..") return "mesh";
+  return name;
 }
 
 }  // namespace recoil::cli

@@ -21,7 +21,7 @@ struct Range {
 
 inline constexpr Range kCoordinateRange{-1e5, 1e5};        // m: positions, targets, pin boxes, plane points
 inline constexpr Range kSizeRange{1e-6, 1e5};               // m: box edges, radii, heights, collision edges
-inline constexpr Range kScaleRange{1e-6, 1e6};              // |scale factor|; a negative one mirrors
+inline constexpr Range kScaleRange{1e-9, 1e9};              // |scale factor|: nanometre units to metres and back; a negative one mirrors
 inline constexpr Range kSpeedRange{-1e4, 1e4};              // m/s, each component of a velocity
 inline constexpr Range kAngularSpeedRange{-1e4, 1e4};       // rad/s, each component
 inline constexpr Range kAngleRange{-1e5, 1e5};              // degrees: rotations, azimuths
@@ -52,5 +52,12 @@ inline constexpr int kMaxNameBytes = 128;        // a scene or body name (a fold
 // usable folder name, so not empty, ".", ".." or longer than kMaxNameBytes,
 // and free of '/' and control characters.
 std::string unsafe_name_reason(const std::string& name);
+
+// A scene or body name taken from a mesh file's stem by the commands that
+// build scenes (drop, turntable): cut, at a character boundary, to leave
+// room for a suffix of up to kNameSuffixBytes ("-pile", "-1000"), control
+// characters replaced by '_'; "mesh" for nothing left.
+inline constexpr int kNameSuffixBytes = 8;
+std::string name_from_stem(const std::string& stem);
 
 }  // namespace recoil::cli

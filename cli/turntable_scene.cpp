@@ -3,6 +3,7 @@
 #include <filesystem>
 
 #include "cli/drop_scene.h"
+#include "cli/scene_limits.h"
 
 namespace recoil::cli {
 
@@ -19,7 +20,7 @@ nlohmann::json build_turntable_scene(const TurntableSettings& settings, Imported
   drop.collision = settings.collision;
   drop.seconds = (settings.turn_frames - 1) / settings.fps;
   nlohmann::json scene = build_drop_scene(drop, imported);
-  scene["name"] = std::filesystem::path(settings.mesh).stem().string();
+  scene["name"] = name_from_stem(std::filesystem::path(settings.mesh).stem().string());
   scene["description"] = "built by recoil turntable";
   scene["simulation"]["settle"] = settings.settle;
   scene["render"] = {{"fps", settings.fps},

@@ -90,6 +90,33 @@ TEST(TurntableCommand, BadInputIsExit2AndUnwritableOutputIsExit4) {
   EXPECT_EQ(blocked.exit_code, 4) << blocked.err;
 }
 
+// Meshes as exported, whatever their units or names: a box modelled in
+// units of 1.5 nm (0.3 m as 2e8) is scaled to 0.3 m like any other,
+// and a file name past the 128-byte scene name is cut (at a character, not
+// inside one) for the scene's and the bodies' names.
+TEST(TurntableCommand, HugeUnitsAndLongFileNamesStillMakeAScene) {
+  const fs::path dir = scratch_dir("turntable_units_names");
+  const fs::path huge = write_box_off(dir / "huge.off", Eigen::Vector3d::Zero(), Eigen::Vector3d(2e8, 1e8, 1.5e8));
+  const CommandResult r = run_recoil("turntable " + shell_quote(huge) + " --turn-frames 1 --resolution 32x32 -q -o " +
+                                     shell_quote(dir / "huge"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const nlohmann::json scene = nlohmann::json::parse(file_bytes(dir / "huge/scene.json"));
+  EXPECT_NEAR(scene["bodies"][1]["transform"]["scale"].get<double>(), 1.5e-9, 1e-15);
+  std::string stem;
+  for (int i = 0; i < 100; ++i) stem += "\u00e9";  // 200 bytes of two-byte characters
+  const fs::path named = write_box_off(dir / (stem + ".off"), Eigen::Vector3d::Zero(), Eigen::Vector3d::Constant(0.2));
+  for (const std::string command : {"turntable", "drop"}) {
+    const CommandResult n = run_recoil(command + " " + shell_quote(named) + " --frames 1 --resolution 32x32 -q -o " +
+                                       shell_quote(dir / command));
+    ASSERT_EQ(n.exit_code, 0) << n.err;
+    const nlohmann::json s = nlohmann::json::parse(file_bytes(dir / command / "scene.json"));
+    const std::string name = s["name"], body = s["bodies"][1]["name"];
+    EXPECT_LE(name.size(), 128u) << command;
+    EXPECT_EQ(name.substr(0, 120), stem.substr(0, 120)) << command;
+    EXPECT_EQ(body.substr(0, 120), stem.substr(0, 120)) << command;
+  }
+}
+
 // --frames picks frames of the turn as it does in `run`, and the scene.json
 // written beside them reruns the same turntable.
 TEST(TurntableCommand, FramesSelectsAsInRunAndTheSceneReruns) {
