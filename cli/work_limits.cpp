@@ -19,6 +19,14 @@ namespace {
 // cube (resolution 48: 664 000 tets, 394 MB peak, about 500 B each) and
 // rounded up for the contact stage's working set.
 constexpr double kBytesPerTet = 640.0;
+// Peak memory per triangle of a body's mesh, measured as the slope between
+// 250 000- and 1 000 000-triangle spheres (`turntable` and `drop`, peak RSS):
+// 270-370 B while simulating (the largest: a static mesh, whose collision
+// surface and its BVH are the mesh itself) and 35-130 B more to draw it.
+constexpr double kBytesPerMeshTriangle = 370.0, kBytesPerDrawnTriangle = 130.0;
+// What drawing holds whatever the scene (the OpenGL context, llvmpipe's
+// threads and compiled shaders): the same measurements' intercept, 28-35 MiB.
+constexpr double kRendererBytes = 40.0 * 1024.0 * 1024.0;
 
 // Upper bound on the tets a lattice of `resolution` cells along the longest
 // side gives a body: six per cell of the box around its surface (the lattice
@@ -58,8 +66,15 @@ MemoryEstimate estimate_memory(const SceneDesc& scene, bool render) {
       estimate.largest_what = what;
     }
   };
+  const double per_triangle = kBytesPerMeshTriangle + (render ? kBytesPerDrawnTriangle : 0.0);
   for (const SceneBody& body : scene.bodies) {
-    if (body.kind != sim::BodyKind::deformable) continue;
+    if (body.is_plane()) continue;
+    const bool deformable = body.kind == sim::BodyKind::deformable;
+    const sim::TriMesh& mesh = deformable ? scene.world.bodies[static_cast<size_t>(body.index)].mesh
+                                          : scene.world.rigid_bodies[static_cast<size_t>(body.index)].mesh;
+    const double triangles = static_cast<double>(mesh.num_triangles());
+    add(triangles * per_triangle, body.pointer + "/mesh", format_number("%.3g", triangles / 1e6) + " million triangles");
+    if (!deformable) continue;
     const sim::DeformableBodyDesc& desc = scene.world.bodies[static_cast<size_t>(body.index)];
     const double tets = lattice_tets(desc);
     const std::string field = body.pointer + (desc.tets.empty() ? "/tets/resolution" : "/mesh");
@@ -68,10 +83,10 @@ MemoryEstimate estimate_memory(const SceneDesc& scene, bool render) {
   if (render) {
     const render::RenderSettings settings = to_render_settings(scene.render);
     const double pixels = static_cast<double>(settings.width) * settings.height;
-    // Colour and depth per sample, the single-sample frame, and an RGBA8 image per
+    // The renderer itself, colour and depth per sample, the single-sample frame, and an RGBA8 image per
     // encoder thread and per frame queued for them.
     const render::FrameWriterSize writer = render::default_frame_writer_size();
-    const double bytes =
+    const double bytes = kRendererBytes +
         pixels * (8.0 * std::max(1, scene.render.msaa) + 4.0 + 4.0 * (writer.threads + writer.capacity));
     add(bytes, "/render/resolution",
         scene.render.resolution + " pixels at msaa " + std::to_string(scene.render.msaa));

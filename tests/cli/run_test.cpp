@@ -1,9 +1,13 @@
 // `recoil run` and `recoil drop` end to end: every
 // shipped scene runs, stats.jsonl keys and types, determinism, --resume,
 // exit 3 on a diverging scene with the earlier frames kept, and drop piles
-// that reproduce and save a scene `run` accepts.
+// that reproduce and save a scene `run` accepts; the memory cap, counted
+// from a mesh's tetrahedra and triangles.
 #include <gtest/gtest.h>
 
+#include <Eigen/Core>
+#include <cmath>
+#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -394,6 +398,52 @@ TEST(DropCommand, AMemoryLimitBelowWhatTheProcessHoldsRefusesTheRun) {
   EXPECT_NE(r.err.find("in use before it starts), more than the 0.01 GiB allowed (--max-memory)"), std::string::npos)
       << r.err;
   EXPECT_FALSE(fs::exists(dir / "out" / "run.json"));
+}
+
+// A dense scan costs memory by its triangles, whatever the lattice: a
+// 250 000-triangle sphere (binary STL) under a cap below what it needs is
+// refused naming the mesh, and the estimate the refusal gives is not below
+// what the same turntable then uses (run.json's peak).
+TEST(TurntableCommand, AMemoryLimitCountsWhatAMeshsTrianglesNeed) {
+  const fs::path dir = scratch_dir("turntable_memory_triangles");
+  const fs::path stl = dir / "scan.stl";
+  {
+    const int n = 250;  // n rows of 2n quads: 4 n^2 triangles
+    auto point = [&](int i, int j) {
+      const double theta = M_PI * i / n, phi = M_PI * j / n;
+      return Eigen::Vector3f(static_cast<float>(0.15 * std::sin(theta) * std::cos(phi)),
+                             static_cast<float>(0.15 * std::cos(theta)),
+                             static_cast<float>(0.15 * std::sin(theta) * std::sin(phi)));
+    };
+    std::ofstream out(stl, std::ios::binary);
+    const std::string header(80, '\0');
+    out.write(header.data(), 80);
+    const std::uint32_t count = 4 * n * n;
+    out.write(reinterpret_cast<const char*>(&count), 4);
+    auto triangle = [&](const Eigen::Vector3f& a, const Eigen::Vector3f& b, const Eigen::Vector3f& c) {
+      const float normal[3] = {0, 0, 0};
+      const std::uint16_t attributes = 0;
+      out.write(reinterpret_cast<const char*>(normal), 12);
+      for (const Eigen::Vector3f& p : {a, b, c}) out.write(reinterpret_cast<const char*>(p.data()), 12);
+      out.write(reinterpret_cast<const char*>(&attributes), 2);
+    };
+    for (int i = 0; i < n; ++i)
+      for (int j = 0; j < 2 * n; ++j) {
+        const Eigen::Vector3f a = point(i, j), b = point(i, j + 1), c = point(i + 1, j + 1), d = point(i + 1, j);
+        triangle(a, c, b);
+        triangle(a, d, c);
+      }
+  }
+  const std::string args = "turntable " + shell_quote(stl) + " --turn-frames 2 --resolution 64x48 -o ";
+  const CommandResult refused = run_recoil("--max-memory 0.15 " + args + shell_quote(dir / "refused"));
+  ASSERT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("/bodies/1/mesh: the run needs about "), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("million triangles"), std::string::npos) << refused.err;
+  const double estimate_gib = std::stod(refused.err.substr(refused.err.find("needs about ") + 12));
+  const CommandResult ran = run_recoil("--max-memory 2 " + args + shell_quote(dir / "ran"));
+  ASSERT_EQ(ran.exit_code, 0) << ran.err;
+  const double peak_mib = json::parse(file_bytes(dir / "ran/run.json"))["peak_memory_mib"];
+  EXPECT_GE(estimate_gib * 1024.0, 0.9 * peak_mib) << "estimated " << estimate_gib << " GiB";
 }
 
 TEST(DropCommand, AVideoThatCannotBeWrittenFailsBeforeTheFirstFrame) {
