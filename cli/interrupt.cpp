@@ -4,6 +4,8 @@
 
 #include <atomic>
 #include <csignal>
+#include <nlohmann/json.hpp>
+#include <string>
 
 namespace recoil::cli {
 namespace {
@@ -19,7 +21,33 @@ extern "C" void record_interrupt(int signal_number) {
   if (g_interrupt_signal.exchange(signal_number) != 0) ::_exit(128 + signal_number);
 }
 
+// report_interrupts_outside_the_loops' lines, made before any signal can
+// come: the handler may only write(2) and _exit(2).
+std::string g_sigint_line, g_sigterm_line;
+
+extern "C" void report_and_exit(int signal_number) {
+  const std::string& line = signal_number == SIGINT ? g_sigint_line : g_sigterm_line;
+  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, line.data(), line.size());
+  ::_exit(128 + signal_number);
+}
+
 }  // namespace
+
+void report_interrupts_outside_the_loops(bool log_json) {
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    const std::string message =
+        "interrupted by " + signal_name(signal_number) + " outside the frame loop: stopped at once (files are written whole or not at all)";
+    const int code = 128 + signal_number;
+    std::string line = log_json ? nlohmann::json{{"event", "interrupted"}, {"message", message}, {"exit_code", code}}.dump()
+                                : "recoil: " + message;
+    (signal_number == SIGINT ? g_sigint_line : g_sigterm_line) = line + "\n";
+  }
+  struct sigaction action {};
+  action.sa_handler = report_and_exit;
+  sigemptyset(&action.sa_mask);
+  ::sigaction(SIGINT, &action, nullptr);
+  ::sigaction(SIGTERM, &action, nullptr);
+}
 
 InterruptScope::InterruptScope() {
   g_interrupt_signal = 0;

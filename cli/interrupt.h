@@ -19,6 +19,13 @@ class InterruptScope {
 // The signal received inside the current InterruptScope, or 0.
 int pending_interrupt();
 
+// Outside every InterruptScope (reading meshes, building the world, writing
+// the last outputs), SIGINT and SIGTERM still stop the process at once, but
+// first write the end line a caught interrupt writes (as JSON with
+// `log_json`); exit 128 + the signal. Installed once, after the arguments
+// are parsed; an InterruptScope restores it when it ends.
+void report_interrupts_outside_the_loops(bool log_json);
+
 // "SIGINT", "SIGTERM" (or "signal N").
 std::string signal_name(int signal_number);
 

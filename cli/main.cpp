@@ -7,6 +7,7 @@
 
 #include "cli/build_info.h"
 #include "cli/commands.h"
+#include "cli/interrupt.h"
 #include "cli/shell_quote.h"
 #include "cli/usage_error.h"
 #include "core/error.h"
@@ -58,6 +59,7 @@ int main(int argc, char** argv) {
     std::cerr << "recoil: error: " << cli::usage_error(app, e, std::vector<std::string>(argv + 1, argv + argc)) << std::endl;
     return static_cast<int>(ErrorKind::bad_input);
   }
+  cli::report_interrupts_outside_the_loops(global.log_json);
   try {
     return action ? action() : 0;
   } catch (const Interrupted& e) {

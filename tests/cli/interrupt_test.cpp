@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "render/png_probe.h"
+#include "tests/cli/sphere_stl_file.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -76,7 +77,12 @@ const fs::path& uninterrupted_run() {
 }
 
 // `recoil run SCENE -q -o OUT` as a child process, stderr into `err`.
-pid_t start_run(const fs::path& scene, const fs::path& out, const fs::path& err) {
+// Starts `recoil ARGS` with stdout and stderr to `err`; returns its pid.
+pid_t start_recoil(std::vector<std::string> args, const fs::path& err) {
+  args.insert(args.begin(), RECOIL_BINARY);
+  std::vector<char*> argv;
+  for (std::string& a : args) argv.push_back(a.data());
+  argv.push_back(nullptr);
   const pid_t pid = ::fork();
   if (pid != 0) return pid;
   const int null_in = ::open("/dev/null", O_RDONLY);
@@ -84,10 +90,12 @@ pid_t start_run(const fs::path& scene, const fs::path& out, const fs::path& err)
   ::dup2(null_in, STDIN_FILENO);
   ::dup2(err_fd, STDOUT_FILENO);
   ::dup2(err_fd, STDERR_FILENO);
-  const std::string scene_arg = scene.string(), out_arg = out.string();
-  ::execl(RECOIL_BINARY, RECOIL_BINARY, "run", scene_arg.c_str(), "-q", "-o", out_arg.c_str(),
-          static_cast<char*>(nullptr));
+  ::execv(RECOIL_BINARY, argv.data());
   ::_exit(127);
+}
+
+pid_t start_run(const fs::path& scene, const fs::path& out, const fs::path& err) {
+  return start_recoil({"run", scene.string(), "-q", "-o", out.string()}, err);
 }
 
 // Polls until `file` exists (true) or the child has ended (false, with its
@@ -154,6 +162,46 @@ TEST(InterruptRun, SigintLeavesWholeFramesAndRunJsonAndResumeMatchesAnUninterrup
   const json after = json::parse(file_bytes(run.out / "run.json"));
   EXPECT_EQ(after["exit"]["status"], "ok");
   EXPECT_EQ(after["frames"]["skipped"], static_cast<int>(kept.size()));
+}
+
+// A signal while the mesh is still being read (in a child process of
+// recoil's, whose appearance also says recoil is past its arguments) stops
+// the command at once, with the end line a caught interrupt writes (JSON
+// under --log-json) and nothing on disk.
+TEST(InterruptRun, ASignalWhileTheMeshIsReadIsReported) {
+  const fs::path dir = scratch_dir("interrupt_loading");
+  const fs::path stl = write_sphere_stl(dir / "scan.stl", 250);
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    const fs::path out = dir / ("out" + std::to_string(signal_number)), err = dir / "stderr.txt";
+    std::vector<std::string> args = {"turntable", stl.string(), "--turn-frames", "2", "--resolution", "64x48", "-o",
+                                     out.string()};
+    if (signal_number == SIGTERM) args.insert(args.begin(), "--log-json");
+    const pid_t pid = start_recoil(args, err);
+    ASSERT_GT(pid, 0);
+    const fs::path children = "/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children";
+    bool reading = false;
+    while (!reading) {
+      int status = 0;
+      ASSERT_NE(::waitpid(pid, &status, WNOHANG), pid) << "it ended before reading: " << file_bytes(err);
+      std::ifstream in(children);
+      std::string child;
+      reading = static_cast<bool>(in >> child);
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    ::kill(pid, signal_number);
+    EXPECT_EQ(exit_code_of(pid), 128 + signal_number);
+    const std::string message = "interrupted by " + std::string(signal_number == SIGINT ? "SIGINT" : "SIGTERM") +
+                                " outside the frame loop: stopped at once (files are written whole or not at all)";
+    if (signal_number == SIGINT) {
+      EXPECT_EQ(file_bytes(err), "recoil: " + message + "\n");
+    } else {
+      const json line = json::parse(file_bytes(err));
+      EXPECT_EQ(line["event"], "interrupted");
+      EXPECT_EQ(line["message"], message);
+      EXPECT_EQ(line["exit_code"], 143);
+    }
+    EXPECT_FALSE(fs::exists(out));
+  }
 }
 
 TEST(InterruptRun, SigtermExits143WithRunJsonInterrupted) {

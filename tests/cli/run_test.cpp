@@ -5,9 +5,6 @@
 // from a mesh's tetrahedra and triangles.
 #include <gtest/gtest.h>
 
-#include <Eigen/Core>
-#include <cmath>
-#include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -16,6 +13,7 @@
 #include "render/png.h"
 #include "tests/cli/box_mesh_file.h"
 #include "tests/cli/json_lines.h"
+#include "tests/cli/sphere_stl_file.h"
 #include "tests/test_support.h"
 
 namespace recoil::test {
@@ -406,34 +404,7 @@ TEST(DropCommand, AMemoryLimitBelowWhatTheProcessHoldsRefusesTheRun) {
 // what the same turntable then uses (run.json's peak).
 TEST(TurntableCommand, AMemoryLimitCountsWhatAMeshsTrianglesNeed) {
   const fs::path dir = scratch_dir("turntable_memory_triangles");
-  const fs::path stl = dir / "scan.stl";
-  {
-    const int n = 250;  // n rows of 2n quads: 4 n^2 triangles
-    auto point = [&](int i, int j) {
-      const double theta = M_PI * i / n, phi = M_PI * j / n;
-      return Eigen::Vector3f(static_cast<float>(0.15 * std::sin(theta) * std::cos(phi)),
-                             static_cast<float>(0.15 * std::cos(theta)),
-                             static_cast<float>(0.15 * std::sin(theta) * std::sin(phi)));
-    };
-    std::ofstream out(stl, std::ios::binary);
-    const std::string header(80, '\0');
-    out.write(header.data(), 80);
-    const std::uint32_t count = 4 * n * n;
-    out.write(reinterpret_cast<const char*>(&count), 4);
-    auto triangle = [&](const Eigen::Vector3f& a, const Eigen::Vector3f& b, const Eigen::Vector3f& c) {
-      const float normal[3] = {0, 0, 0};
-      const std::uint16_t attributes = 0;
-      out.write(reinterpret_cast<const char*>(normal), 12);
-      for (const Eigen::Vector3f& p : {a, b, c}) out.write(reinterpret_cast<const char*>(p.data()), 12);
-      out.write(reinterpret_cast<const char*>(&attributes), 2);
-    };
-    for (int i = 0; i < n; ++i)
-      for (int j = 0; j < 2 * n; ++j) {
-        const Eigen::Vector3f a = point(i, j), b = point(i, j + 1), c = point(i + 1, j + 1), d = point(i + 1, j);
-        triangle(a, c, b);
-        triangle(a, d, c);
-      }
-  }
+  const fs::path stl = write_sphere_stl(dir / "scan.stl", 250);
   const std::string args = "turntable " + shell_quote(stl) + " --turn-frames 2 --resolution 64x48 -o ";
   const CommandResult refused = run_recoil("--max-memory 0.15 " + args + shell_quote(dir / "refused"));
   ASSERT_EQ(refused.exit_code, 2) << refused.err;
