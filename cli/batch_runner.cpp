@@ -13,8 +13,8 @@
 #include <fstream>
 #include <iostream>
 #include <map>
-#include <sstream>
 #include <nlohmann/json.hpp>
+#include <sstream>
 #include <thread>
 
 #include "cli/interrupt.h"
@@ -153,7 +153,8 @@ void check_item_folders_are_ours(const std::vector<BatchItem>& items, const Batc
     if (!options.shard.keeps(item.index) || !fs::exists(fs::symlink_status(dir, ec))) continue;
     if (fs::is_directory(fs::symlink_status(dir, ec)) && fs::exists(dir / "item.json")) continue;
     throw output_error(dir.string() + " is there but was not written by recoil batch (it has no item.json); item " +
-                       std::to_string(item.index) + " would replace it: move it away, or give the item another \"name\"");
+                       std::to_string(item.index) +
+                       " would replace it: move it away, or give the item another \"name\"");
   }
 }
 

@@ -35,11 +35,12 @@ extern "C" void report_and_exit(int signal_number) {
 
 void report_interrupts_outside_the_loops(bool log_json) {
   for (const int signal_number : {SIGINT, SIGTERM}) {
-    const std::string message =
-        "interrupted by " + signal_name(signal_number) + " outside the frame loop: stopped at once (files are written whole or not at all)";
+    const std::string message = "interrupted by " + signal_name(signal_number) +
+                                " outside the frame loop: stopped at once (files are written whole or not at all)";
     const int code = 128 + signal_number;
-    std::string line = log_json ? nlohmann::json{{"event", "interrupted"}, {"message", message}, {"exit_code", code}}.dump()
-                                : "recoil: " + message;
+    const std::string line =
+        log_json ? nlohmann::json{{"event", "interrupted"}, {"message", message}, {"exit_code", code}}.dump()
+                 : "recoil: " + message;
     (signal_number == SIGINT ? g_sigint_line : g_sigterm_line) = line + "\n";
   }
   struct sigaction action {};

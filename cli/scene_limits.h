@@ -21,7 +21,7 @@ struct Range {
 
 inline constexpr Range kCoordinateRange{-1e5, 1e5};        // m: positions, targets, pin boxes, plane points
 inline constexpr Range kSizeRange{1e-6, 1e5};               // m: box edges, radii, heights, collision edges
-inline constexpr Range kScaleRange{1e-9, 1e9};              // |scale factor|: nanometre units to metres and back; a negative one mirrors
+inline constexpr Range kScaleRange{1e-9, 1e9};              // |scale factor|, nanometre units and back; negative mirrors
 inline constexpr Range kSpeedRange{-1e4, 1e4};              // m/s, each component of a velocity
 inline constexpr Range kAngularSpeedRange{-1e4, 1e4};       // rad/s, each component
 inline constexpr Range kAngleRange{-1e5, 1e5};              // degrees: rotations, azimuths

@@ -73,7 +73,8 @@ MemoryEstimate estimate_memory(const SceneDesc& scene, bool render) {
     const sim::TriMesh& mesh = deformable ? scene.world.bodies[static_cast<size_t>(body.index)].mesh
                                           : scene.world.rigid_bodies[static_cast<size_t>(body.index)].mesh;
     const double triangles = static_cast<double>(mesh.num_triangles());
-    add(triangles * per_triangle, body.pointer + "/mesh", format_number("%.3g", triangles / 1e6) + " million triangles");
+    add(triangles * per_triangle, body.pointer + "/mesh",
+        format_number("%.3g", triangles / 1e6) + " million triangles");
     if (!deformable) continue;
     const sim::DeformableBodyDesc& desc = scene.world.bodies[static_cast<size_t>(body.index)];
     const double tets = lattice_tets(desc);
