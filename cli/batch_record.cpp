@@ -24,16 +24,22 @@ InputStamp stamp(const fs::path& file) {
   return out;
 }
 
-// The mesh files a scene file names, resolved against its folder as the
-// scene reader does; none when it cannot be read (the item then fails on it).
-std::vector<fs::path> scene_meshes(const fs::path& scene) {
+// The mesh and tet files a scene file names (bodies/*/mesh, bodies/*/tets/file),
+// resolved against its folder as the scene reader does; none when it cannot
+// be read (the item then fails on it).
+std::vector<fs::path> scene_files(const fs::path& scene) {
   std::ifstream in(scene);
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   std::vector<fs::path> out;
   if (!j.is_object() || !j.contains("bodies") || !j["bodies"].is_array()) return out;
-  for (const nlohmann::json& body : j["bodies"])
-    if (body.is_object() && body.contains("mesh") && body["mesh"].is_string())
-      out.push_back((scene.parent_path() / body["mesh"].get<std::string>()).lexically_normal());
+  auto add = [&](const nlohmann::json& name) {
+    if (name.is_string()) out.push_back((scene.parent_path() / name.get<std::string>()).lexically_normal());
+  };
+  for (const nlohmann::json& body : j["bodies"]) {
+    if (!body.is_object()) continue;
+    if (body.contains("mesh")) add(body["mesh"]);
+    if (body.contains("tets") && body["tets"].is_object() && body["tets"].contains("file")) add(body["tets"]["file"]);
+  }
   return out;
 }
 
@@ -44,7 +50,7 @@ std::vector<InputStamp> input_stamps(const BatchItem& item) {
   for (const std::string& file : item.inputs) {
     out.push_back(stamp(file));
     if (item.mode == "run")
-      for (const fs::path& mesh : scene_meshes(file)) out.push_back(stamp(mesh));
+      for (const fs::path& named : scene_files(file)) out.push_back(stamp(named));
   }
   return out;
 }

@@ -19,8 +19,10 @@ struct InputStamp {
   bool operator==(const InputStamp&) const = default;
 };
 
-// The stamps of every file `item` reads: its scene or mesh files, and the
-// mesh files its scene names (bodies/*/mesh).
+// The stamps of the files `item` reads: its scene or mesh files, and the
+// mesh and tet files its scene names (bodies/*/mesh, bodies/*/tets/file).
+// Not the files a mesh file itself refers to (an OBJ's materials and
+// textures, a glTF's buffers).
 std::vector<InputStamp> input_stamps(const BatchItem& item);
 
 struct ItemRecord {

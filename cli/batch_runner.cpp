@@ -17,10 +17,12 @@
 #include <sstream>
 #include <thread>
 
+#include "cli/format_number.h"
 #include "cli/interrupt.h"
 #include "cli/item_lock.h"
 #include "cli/output_dir.h"
 #include "cli/progress.h"
+#include "cli/work_limits.h"
 #include "core/error.h"
 
 namespace recoil::cli {
@@ -35,17 +37,14 @@ struct Running {
   ItemLock lock;  // released once the item has stopped and its folder is in place
 };
 
-// The item's command line, with its output folder, its share of the cores
-// and, when the batch was given --max-memory (`memory_gib` > 0), its share of that.
+// The item's command line, with its output folder and its share of the
+// cores and of the memory (GiB).
 std::vector<std::string> child_arguments(const BatchItem& item, const fs::path& partial, int threads,
                                          double memory_gib) {
-  std::vector<std::string> args;
-  if (memory_gib > 0.0) {
-    std::ostringstream cap;
-    cap.precision(17);
-    cap << std::max(memory_gib, 0.01);  // the option's least value
-    args = {"--max-memory", cap.str()};
-  }
+  std::ostringstream cap;
+  cap.precision(17);
+  cap << memory_gib;
+  std::vector<std::string> args = {"--max-memory", cap.str()};
   args.insert(args.end(), item.args.begin(), item.args.end());
   args.insert(args.end(), {"-o", partial.string()});
   const bool takes_threads = item.mode == "run" || item.mode == "drop";
@@ -95,6 +94,9 @@ std::string failure_message(const fs::path& log, int status) {
   return "exit " + std::to_string(WEXITSTATUS(status));
 }
 
+// Where an item's earlier folder waits to be deleted once the new one is in place.
+fs::path replaced_folder(const fs::path& output, const BatchItem& item) { return output / (item.name + ".replaced"); }
+
 void remove_or_throw(const fs::path& path) {
   std::error_code ec;
   fs::remove_all(path, ec);
@@ -114,11 +116,20 @@ ItemRecord finish_item(const Running& run, int status, const Shard& shard, const
   r.command = run.item->args;
   r.inputs = run.inputs;
   write_item_record(run.partial, r);
-  const fs::path final_dir = output / run.item->name;
-  remove_or_throw(final_dir);  // an earlier run's: a failure, or a success of another command line
+  const fs::path final_dir = output / run.item->name, old_dir = replaced_folder(output, *run.item);
+  // An earlier run's folder (a failure, or a success of another command line
+  // or other inputs) is renamed aside before it is deleted: deleting it in
+  // place could be cut short with item.json gone and frames left, a folder
+  // that batch could no longer tell from a user's.
   std::error_code ec;
+  if (fs::exists(fs::symlink_status(final_dir, ec))) {
+    remove_or_throw(old_dir);
+    fs::rename(final_dir, old_dir, ec);
+    if (ec) throw output_error("cannot move " + final_dir.string() + " to " + old_dir.string() + ": " + ec.message());
+  }
   fs::rename(run.partial, final_dir, ec);
   if (ec) throw output_error("cannot move " + run.partial.string() + " to " + final_dir.string() + ": " + ec.message());
+  remove_or_throw(old_dir);
   return r;
 }
 
@@ -174,6 +185,13 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int jobs = std::max(1, std::min<int>(options.jobs, static_cast<int>(todo.size())));
   const int threads = std::max(1, cores / jobs);
+  // --max-memory (or its default) holds for the batch: the items running at once share it.
+  const double memory_gib =
+      std::min(memory_limit_bytes(global.max_memory_gib) / jobs / (1024.0 * 1024.0 * 1024.0), kMostMaxMemoryGib);
+  if (memory_gib < kLeastMaxMemoryGib)
+    throw bad_input("--max-memory: " + std::to_string(jobs) + " items at once (--jobs) would get " +
+                    format_number("%.3g", memory_gib) + " GiB each; at least " +
+                    format_number("%g", kLeastMaxMemoryGib));
 
   const InterruptScope interrupts;
   Progress progress(global, "batch", static_cast<int>(records.size() + todo.size()));
@@ -201,9 +219,10 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
       const std::vector<InputStamp> inputs = input_stamps(item);  // before it reads them
       const fs::path partial = options.output / (item.name + ".partial");
       remove_or_throw(partial);  // what a killed run left
+      remove_or_throw(replaced_folder(options.output, item));
       ensure_output_dir(partial);
-      const pid_t pid = start_child(child_arguments(item, partial, threads, global.max_memory_gib / jobs),
-                                    partial / "log.txt", threads, *lock);
+      const pid_t pid =
+          start_child(child_arguments(item, partial, threads, memory_gib), partial / "log.txt", threads, *lock);
       running.emplace(pid, Running{&item, inputs, partial, std::chrono::steady_clock::now(), std::move(*lock)});
     }
     if (pending_interrupt()) {

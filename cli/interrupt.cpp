@@ -2,8 +2,10 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <atomic>
 #include <csignal>
+#include <cstring>
 #include <nlohmann/json.hpp>
 #include <string>
 
@@ -22,12 +24,23 @@ extern "C" void record_interrupt(int signal_number) {
 }
 
 // report_interrupts_outside_the_loops' lines, made before any signal can
-// come: the handler may only write(2) and _exit(2).
-std::string g_sigint_line, g_sigterm_line;
+// come and never freed (a signal may arrive while the process exits): the
+// handler may only read them, write(2) and _exit(2).
+struct EndLine {
+  char text[512];
+  size_t size;
+};
+EndLine g_sigint_line{}, g_sigterm_line{};
+// The process that installed the handler: a child forked while it is
+// installed (the mesh reader) inherits it, and on a terminal's Ctrl-C, which
+// reaches the whole process group, must leave the line to its parent.
+pid_t g_reporting_process = 0;
 
 extern "C" void report_and_exit(int signal_number) {
-  const std::string& line = signal_number == SIGINT ? g_sigint_line : g_sigterm_line;
-  [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, line.data(), line.size());
+  const EndLine& line = signal_number == SIGINT ? g_sigint_line : g_sigterm_line;
+  if (::getpid() == g_reporting_process) {
+    [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, line.text, line.size);
+  }
   ::_exit(128 + signal_number);
 }
 
@@ -39,15 +52,23 @@ void report_interrupts_outside_the_loops(bool log_json) {
                                 " outside the frame loop: stopped at once (files are written whole or not at all)";
     const int code = 128 + signal_number;
     const std::string line =
-        log_json ? nlohmann::json{{"event", "interrupted"}, {"message", message}, {"exit_code", code}}.dump()
-                 : "recoil: " + message;
-    (signal_number == SIGINT ? g_sigint_line : g_sigterm_line) = line + "\n";
+        (log_json ? nlohmann::json{{"event", "interrupted"}, {"message", message}, {"exit_code", code}}.dump()
+                  : "recoil: " + message) +
+        "\n";
+    EndLine& out = signal_number == SIGINT ? g_sigint_line : g_sigterm_line;
+    out.size = std::min(line.size(), sizeof(out.text));
+    std::memcpy(out.text, line.data(), out.size);
   }
+  g_reporting_process = ::getpid();
   struct sigaction action {};
   action.sa_handler = report_and_exit;
   sigemptyset(&action.sa_mask);
-  ::sigaction(SIGINT, &action, nullptr);
-  ::sigaction(SIGTERM, &action, nullptr);
+  for (const int signal_number : {SIGINT, SIGTERM}) {
+    struct sigaction previous {};
+    ::sigaction(signal_number, nullptr, &previous);
+    // A signal the caller chose to ignore (a background job's SIGINT) stays ignored.
+    if (previous.sa_handler != SIG_IGN) ::sigaction(signal_number, &action, nullptr);
+  }
 }
 
 InterruptScope::InterruptScope() {

@@ -268,13 +268,21 @@ sim::CollisionSurfaceDesc parse_collision(const JsonCursor& c) {
 }
 
 // A body placed by its transform must stay inside the world's coordinate
-// range; rotation keeps lengths, so scale and translation bound it.
+// range (rotation keeps lengths, so scale and translation bound it) and,
+// whatever the mesh's units, be at least as large as a primitive may be.
 void check_placed_extent(const JsonCursor& body, const sim::TriMesh& mesh, const sim::Transform& transform) {
   const double reach = (mesh.vertices.array().rowwise() * transform.scale.transpose().array()).matrix().rowwise().norm().maxCoeff() +
                        transform.position.norm();
   if (!(reach <= kCoordinateRange.hi))
     body.fail("reaches " + format_number("%.3g", reach) + " m from the origin once placed by its transform; at most " +
               format_number("%g", kCoordinateRange.hi) + " m");
+  if (mesh.vertices.rows() == 0) return;
+  const Eigen::Vector3d extent =
+      (mesh.vertices.colwise().maxCoeff() - mesh.vertices.colwise().minCoeff()).transpose().cwiseProduct(
+          transform.scale.cwiseAbs());
+  if (!(extent.maxCoeff() >= kSizeRange.lo))
+    body.fail("is " + format_number("%.3g", extent.maxCoeff()) + " m across once scaled by its transform; at least " +
+              format_number("%g", kSizeRange.lo) + " m");
 }
 
 render::Rgb parse_body_color(const JsonCursor& c) {

@@ -23,6 +23,8 @@ constexpr double kBytesPerTet = 640.0;
 // 250 000- and 1 000 000-triangle spheres (`turntable` and `drop`, peak RSS):
 // 270-370 B while simulating (the largest: a static mesh, whose collision
 // surface and its BVH are the mesh itself) and 35-130 B more to draw it.
+// The slopes include the imported mesh, about 20 B a triangle, which the
+// resident memory counted as in use also holds: a slight overestimate.
 constexpr double kBytesPerMeshTriangle = 370.0, kBytesPerDrawnTriangle = 130.0;
 // What drawing holds whatever the scene (the OpenGL context, llvmpipe's
 // threads and compiled shaders): the same measurements' intercept, 28-35 MiB.

@@ -12,6 +12,9 @@ namespace recoil::cli {
 // the machine's physical memory.
 double memory_limit_bytes(double max_memory_gib);
 
+// The range of --max-memory, GiB.
+inline constexpr double kLeastMaxMemoryGib = 0.01, kMostMaxMemoryGib = 1e6;
+
 struct MemoryEstimate {
   double bytes = 0.0;          // the whole run, `in_use` included
   double in_use = 0.0;         // what the process holds already: libraries, imported meshes

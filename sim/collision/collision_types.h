@@ -31,10 +31,12 @@ struct CollisionSurface {
   const Points* rest = nullptr;
   // Optional with self_contact, for a surface embedded in a tet lattice: the
   // element each vertex moves with (#V, into `elements`) and the elements'
-  // nodes (#T by 4). Two primitives whose elements share a node come
-  // together only as those elements strain, which their elasticity governs:
-  // such a pair is never a contact (a contact inside the lattice's own
-  // resolution can be met only by collapsing its elements).
+  // nodes (#T by 4). Two primitives in one element, or in two that share a
+  // face, come together only as those elements strain, which their
+  // elasticity governs: such a pair is never a contact (a contact inside the
+  // lattice's own resolution can be met only by collapsing its elements).
+  // Elements meeting at a node or an edge can fold about it without
+  // straining, and their pairs stay contacts.
   const Eigen::VectorXi* vertex_element = nullptr;
   const Tets* elements = nullptr;
 };

@@ -274,16 +274,19 @@ namespace {
 // contact.
 double self_reach(double rest_distance, double margin) { return std::min(margin, rest_distance - margin); }
 
-// Whether the elements that a self pair's two primitives move with share a
-// lattice node (collision_types.h); `a` and `b` are the primitives' vertices.
+// Whether a vertex of one primitive of a self pair moves with the element of
+// a vertex of the other, or with one sharing a face with it (collision_types.h);
+// `a` and `b` are the primitives' vertices.
 template <size_t NA, size_t NB>
-bool share_element_node(const CollisionSurface& s, const std::array<int, NA>& a, const std::array<int, NB>& b) {
+bool in_face_adjacent_elements(const CollisionSurface& s, const std::array<int, NA>& a,
+                               const std::array<int, NB>& b) {
   if (s.vertex_element == nullptr || s.elements == nullptr) return false;
   for (int va : a)
     for (int vb : b) {
       const auto na = s.elements->row((*s.vertex_element)[va]), nb = s.elements->row((*s.vertex_element)[vb]);
-      for (int i = 0; i < 4; ++i)
-        if ((nb.array() == na[i]).any()) return true;
+      int shared = 0;  // nodes in common: 4 for one element, 3 for a shared face
+      for (int i = 0; i < 4; ++i) shared += (nb.array() == na[i]).any() ? 1 : 0;
+      if (shared >= 3) return true;
     }
   return false;
 }
@@ -388,7 +391,7 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const TriangleClosestPoint closest = closest_point_on_triangle(p0, t0[0], t0[1], t0[2]);
   const double distance = (p0 - closest.point).norm();
   if (!(distance <= margin + relative)) return std::nullopt;
-  if (a.index == b.index && share_element_node(sa, std::array<int, 1>{vertex}, tv)) return std::nullopt;
+  if (a.index == b.index && in_face_adjacent_elements(sa, std::array<int, 1>{vertex}, tv)) return std::nullopt;
   const double reach = a.index == b.index ? self_reach(rest_distance(*sa.rest, vertex, tv), margin) : margin;
   if (!(reach > 0.0) || !(distance <= reach + relative)) return std::nullopt;
   if (relative > 0.0 &&
@@ -474,7 +477,7 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   SegmentClosestPoints closest = closest_points_on_segments(a0, a1, b0, b1);
   const double distance = ((a0 + closest.s * (a1 - a0)) - (b0 + closest.t * (b1 - b0))).norm();
   if (!(distance <= margin + relative)) return std::nullopt;
-  if (a.index == b.index && share_element_node(sa, ea, eb)) return std::nullopt;
+  if (a.index == b.index && in_face_adjacent_elements(sa, ea, eb)) return std::nullopt;
   const double reach = a.index == b.index ? self_reach(rest_distance(*sa.rest, ea, eb), margin) : margin;
   if (!(reach > 0.0) || !(distance <= reach + relative)) return std::nullopt;
   // A flat edge adds nothing its neighbours do not (narrow_phase.h).

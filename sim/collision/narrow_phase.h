@@ -47,8 +47,8 @@
 // pair just past it only once deformation has closed a margin of its rest
 // distance, not when the step's motion alone reaches it. So a body at rest
 // or falling freely has no self candidates while a body that folds onto
-// itself does. Nor is a pair whose lattice elements share a node ever a
-// self-contact (collision_types.h). Pairs of two prescribed (static or kinematic)
+// itself does. Nor is a pair whose lattice elements are one or share a face
+// ever a self-contact (collision_types.h). Pairs of two prescribed (static or kinematic)
 // surfaces, and prescribed surfaces against planes, are never tested.
 //
 // Closest-point weights: a vertex-triangle closest point on an edge or vertex

@@ -102,11 +102,12 @@ TEST(BatchCommand, RerunSkipsCompleteItemsAndRedoesPartialAndFailedOnes) {
   const std::string args = "batch " + shell_quote(manifest) + " -o " + shell_quote(dir / "out") + " --log-json";
   ASSERT_EQ(run_recoil(args).exit_code, 0);
   // What a rerun redoes: an item whose marker cannot be read, what a kill
-  // leaves (a half-written folder, the finished one gone), a failure record.
+  // leaves (a half-written folder, and the finished one gone or renamed
+  // aside to be replaced), a failure record.
   write_text(dir / "out/cube1/item.json", "{\"status\": \"succ");
   fs::create_directories(dir / "out/cube2.partial");
   write_text(dir / "out/cube2.partial/frame_0001.png", "half");
-  fs::remove_all(dir / "out/cube2");
+  fs::rename(dir / "out/cube2", dir / "out/cube2.replaced");
   write_text(dir / "out/cube3/item.json", json{{"status", "failed"}, {"exit_code", 4}}.dump());
   const CommandResult again = run_recoil(args);
   ASSERT_EQ(again.exit_code, 0) << again.err;
@@ -114,6 +115,7 @@ TEST(BatchCommand, RerunSkipsCompleteItemsAndRedoesPartialAndFailedOnes) {
   for (const json& e : item_events(again.err)) ran.insert(e["index"].get<int>());
   EXPECT_EQ(ran, (std::set<int>{1, 2, 3}));
   EXPECT_FALSE(fs::exists(dir / "out/cube2.partial"));
+  EXPECT_FALSE(fs::exists(dir / "out/cube2.replaced"));
   for (int i = 0; i < 4; ++i)
     EXPECT_EQ(read_json(dir / ("out/cube" + std::to_string(i)) / "item.json")["status"], "succeeded") << i;
 }
@@ -211,7 +213,12 @@ TEST(BatchCommand, AFolderBatchDidNotWriteIsNeverReplaced) {
   fs::remove(dir / "out/cube1");
   const CommandResult ours = run_recoil(args);
   ASSERT_EQ(ours.exit_code, 0) << ours.err;
+  write_text(manifest, json::array({{{"mesh", (kModels / "OFF/Cube.off").string()}, {"frames", 1},
+                                     {"resolution", "32x24"}, {"name", "cube0"}}})
+                           .dump());
   EXPECT_EQ(run_recoil(args).exit_code, 0) << "its own folders are replaced as before";
+  EXPECT_EQ(render::read_png(dir / "out/cube0/frame_0001.png").width, 32);
+  EXPECT_FALSE(fs::exists(dir / "out/cube0.replaced"));
 }
 
 // --max-memory before `batch` caps every item, shared out among the items
@@ -231,6 +238,11 @@ TEST(BatchCommand, MaxMemoryIsSharedOutAmongTheItemsRunningAtOnce) {
       EXPECT_NE(item["message"].get<std::string>().find(allowed), std::string::npos) << item["message"];
     }
   }
+  const CommandResult little = run_recoil("--max-memory 0.015 batch " + shell_quote(manifest) + " --jobs 2 -o " +
+                                          shell_quote(dir / "out_little"));
+  EXPECT_EQ(little.exit_code, 2);
+  EXPECT_NE(little.err.find("2 items at once (--jobs) would get 0.0075 GiB each; at least 0.01"), std::string::npos)
+      << little.err;
   const CommandResult set = run_recoil("batch " + shell_quote(manifest) + " --set max-memory=1 -o " +
                                        shell_quote(dir / "out_set"));
   EXPECT_EQ(set.exit_code, 2);

@@ -77,7 +77,8 @@ const fs::path& uninterrupted_run() {
 }
 
 // `recoil run SCENE -q -o OUT` as a child process, stderr into `err`.
-// Starts `recoil ARGS` with stdout and stderr to `err`; returns its pid.
+// Starts `recoil ARGS` with stdout and stderr to `err`, in a process group of
+// its own (as a shell starts a job); returns its pid, the group's id.
 pid_t start_recoil(std::vector<std::string> args, const fs::path& err) {
   args.insert(args.begin(), RECOIL_BINARY);
   std::vector<char*> argv;
@@ -85,6 +86,7 @@ pid_t start_recoil(std::vector<std::string> args, const fs::path& err) {
   argv.push_back(nullptr);
   const pid_t pid = ::fork();
   if (pid != 0) return pid;
+  ::setpgid(0, 0);
   const int null_in = ::open("/dev/null", O_RDONLY);
   const int err_fd = ::open(err.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
   ::dup2(null_in, STDIN_FILENO);
@@ -164,10 +166,11 @@ TEST(InterruptRun, SigintLeavesWholeFramesAndRunJsonAndResumeMatchesAnUninterrup
   EXPECT_EQ(after["frames"]["skipped"], static_cast<int>(kept.size()));
 }
 
-// A signal while the mesh is still being read (in a child process of
-// recoil's, whose appearance also says recoil is past its arguments) stops
-// the command at once, with the end line a caught interrupt writes (JSON
-// under --log-json) and nothing on disk.
+// A signal to the job while the mesh is still being read (in a child process
+// of recoil's, whose appearance also says recoil is past its arguments), as
+// a terminal's Ctrl-C sends it to the whole process group, stops the command
+// at once with one end line, the one a caught interrupt writes (JSON under
+// --log-json), and nothing on disk.
 TEST(InterruptRun, ASignalWhileTheMeshIsReadIsReported) {
   const fs::path dir = scratch_dir("interrupt_loading");
   const fs::path stl = write_sphere_stl(dir / "scan.stl", 250);
@@ -188,7 +191,7 @@ TEST(InterruptRun, ASignalWhileTheMeshIsReadIsReported) {
       reading = static_cast<bool>(in >> child);
       std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
-    ::kill(pid, signal_number);
+    ::kill(-pid, signal_number);
     EXPECT_EQ(exit_code_of(pid), 128 + signal_number);
     const std::string message = "interrupted by " + std::string(signal_number == SIGINT ? "SIGINT" : "SIGTERM") +
                                 " outside the frame loop: stopped at once (files are written whole or not at all)";

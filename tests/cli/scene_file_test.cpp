@@ -173,6 +173,7 @@ TEST(SceneFile, BadSceneCorpusGivesExit2NamingFileAndPointer) {
       {"friction-type.json", {"/bodies/1/friction: expected a number or an object {\"static\", \"kinetic\"}, got a string \"high\""}},
       {"tets-resolution.json", {"/bodies/1/tets/resolution: must be in [1, 256], got 0"}},
       {"negative-scale.json", {"/bodies/1/transform/scale: must be in [1e-09, 1e+09], got -1"}},
+      {"tiny-scale.json", {"/bodies/1: is 1e-09 m across once scaled by its transform; at least 1e-06 m"}},
       {"top-level-typo.json", {"/simulaton: unknown key", "did you mean \"simulation\"?"}},
       {"fps-zero.json", {"/render/fps: must be in [0.001, 1000], got 0"}},
       {"up-axis.json", {"/bodies/1/up: unknown up axis \"+W\"", "+X, -X, +Y, -Y, +Z or -Z"}},

@@ -163,7 +163,7 @@ TEST(SelfContact, ASoftUFoldedShutDoesNotPassThroughItself) {
 // `recoil drop` of the assimp test models' spider (0.3 m, 0.5 kg, soft,
 // lattice 6: legs and body parts of a few millimetres share 5 cm cells) with
 // a 14 kg soft sphere landing on it at 3.3 m/s. Pairs of the spider's
-// surface embedded in elements that share a node can meet only by
+// surface in one element, or in two sharing a face, can meet only by
 // collapsing those elements: as contacts they inverted one within 0.11 s,
 // and the energy blew up a step later.
 TEST(SelfContact, ASpiderCrushedByAHeavySphereKeepsItsElements) {

@@ -287,16 +287,17 @@ TEST(CollisionDetector, SelfContactSkipsNeighbours) {
   EXPECT_TRUE(detector.detect({s}, {}).empty());
 }
 
-TEST(CollisionDetector, SelfContactSkipsPairsWhoseElementsShareANode) {
+TEST(CollisionDetector, SelfContactSkipsPairsInOneElementOrInElementsSharingAFace) {
   // The folded sheet embedded in a lattice: each layer's vertices move with
-  // elements of their own, or with elements that share a node with the
-  // other layer's.
+  // elements of their own, or with elements that share a node or a face with
+  // the other layer's (about a node the two can fold without straining).
   const auto [sheet, unfolded] = folded_sheet();
   const int layer = 81;  // vertices per layer
-  Tets elements(3, 4);
+  Tets elements(4, 4);
   elements << 0, 1, 2, 3,  //
       4, 5, 6, 7,          // apart from the first
-      3, 8, 9, 10;         // sharing node 3 with the first
+      3, 8, 9, 10,         // sharing node 3 with the first
+      1, 2, 3, 11;         // sharing a face with the first
   Eigen::VectorXi vertex_element(2 * layer);
   CollisionSurface s = moving_surface(sheet, 1, BodyKind::deformable, Eigen::Vector3d::Zero());
   s.self_contact = true;
@@ -316,7 +317,8 @@ TEST(CollisionDetector, SelfContactSkipsPairsWhoseElementsShareANode) {
   s.vertex_element = nullptr;
   EXPECT_EQ(CollisionDetector({0.002, 1}).detect({s}, {}).size(), apart) << "elements apart must change nothing";
   s.vertex_element = &vertex_element;
-  EXPECT_EQ(candidates(2), 0u) << "the layers' elements share a node";
+  EXPECT_EQ(candidates(2), apart) << "the layers' elements share a node only";
+  EXPECT_EQ(candidates(3), 0u) << "the layers' elements share a face";
   EXPECT_EQ(candidates(0), 0u) << "both layers in one element";
 }
 
