@@ -14,6 +14,7 @@
 #include "cli/file_io.h"
 #include "cli/input_file.h"
 #include "cli/json_cursor.h"
+#include "cli/utf8_arguments.h"
 #include "core/error.h"
 #include "core/lower_case.h"
 #include "sim/geometry/mesh_import.h"
@@ -201,6 +202,7 @@ std::vector<BatchItem> load_batch_items(const fs::path& source, const nlohmann::
     std::sort(meshes.begin(), meshes.end());
     if (meshes.empty()) throw bad_input(source.string() + ": no mesh files in this folder (nothing for batch to do)");
     for (size_t i = 0; i < meshes.size(); ++i) {
+      require_utf8(meshes[i].string(), "mesh file");
       const nlohmann::json entry = {{"mesh", meshes[i].filename().string()}};
       items.push_back(to_item(JsonCursor(entry, meshes[i].string()), defaults, source, static_cast<int>(i)));
     }

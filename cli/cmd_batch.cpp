@@ -10,6 +10,7 @@
 #include "cli/commands.h"
 #include "cli/json_cursor.h"
 #include "cli/output_dir.h"
+#include "cli/utf8_arguments.h"
 #include "core/error.h"
 #include "render/contact_sheet.h"
 #include "render/png.h"
@@ -176,7 +177,12 @@ void add_batch_command(CLI::App& app, const GlobalOptions& global, Action& actio
       "  recoil batch manifest.json -o previews/ --jobs 2\n"
       "  recoil batch manifest.json -o previews/ --shard 1/4\n"
       "  recoil batch manifest.json -o previews/ --contact-sheet-only --contact-sheet sheet.png\n");
-  cmd->callback([options, &global, &action] { action = [options, &global] { return run_batch(*options, global); }; });
+  cmd->callback([options, &global, &action] {
+    action = [options, &global] {
+      require_utf8_arguments(global);
+      return run_batch(*options, global);
+    };
+  });
 }
 
 }  // namespace recoil::cli

@@ -4,6 +4,7 @@
 #include "cli/drop_scene.h"
 #include "cli/run_options.h"
 #include "cli/scene_parser.h"
+#include "cli/utf8_arguments.h"
 #include "core/error.h"
 
 namespace recoil::cli {
@@ -58,7 +59,10 @@ void add_drop_command(CLI::App& app, const GlobalOptions& global, Action& action
       "  recoil drop bracket.stl --up +Z          # exported Z-up: stands as in the CAD tool\n"
       "  recoil drop statue.ply --collision-triangles 4000   # a 2M-triangle scan, 4000 for contact\n");
   cmd->callback([options, &global, &action] {
-    action = [options, &global] { return run_drop(*options, global); };
+    action = [options, &global] {
+      require_utf8_arguments(global);
+      return run_drop(*options, global);
+    };
   });
 }
 

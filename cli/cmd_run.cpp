@@ -7,6 +7,7 @@
 #include "cli/commands.h"
 #include "cli/run_options.h"
 #include "cli/scene_parser.h"
+#include "cli/utf8_arguments.h"
 #include "core/error.h"
 
 namespace recoil::cli {
@@ -60,6 +61,7 @@ void add_run_command(CLI::App& app, const GlobalOptions& global, Action& action)
       "  recoil run scene.json --video out.mp4                        # needs ffmpeg\n");
   cmd->callback([options, &global, &action] {
     action = [options, &global] {
+      require_utf8_arguments(global);
       refuse_non_scene(options->scene);
       return execute_run(load_scene(options->scene), options->run, global, "run");
     };

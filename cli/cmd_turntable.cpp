@@ -5,6 +5,7 @@
 #include "cli/run_options.h"
 #include "cli/scene_parser.h"
 #include "cli/turntable_scene.h"
+#include "cli/utf8_arguments.h"
 
 namespace recoil::cli {
 namespace {
@@ -71,7 +72,10 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
       "  recoil turntable model.glb --frames 1,31,61,91 -o views/   # four views of the 120\n"
       "  recoil turntable model.glb --video model.mp4               # needs ffmpeg\n");
   cmd->callback([options, &global, &action] {
-    action = [options, &global] { return run_turntable(*options, global); };
+    action = [options, &global] {
+      require_utf8_arguments(global);
+      return run_turntable(*options, global);
+    };
   });
 }
 

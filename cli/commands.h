@@ -6,6 +6,7 @@
 #include <CLI/CLI.hpp>
 #include <functional>
 #include <string>
+#include <vector>
 
 namespace recoil::cli {
 
@@ -14,6 +15,7 @@ struct GlobalOptions {
   bool log_json = false;  // --log-json: machine-readable progress on stderr
   double max_memory_gib = 0.0;  // --max-memory: a run estimated to need more is refused; 0: 80 % of the machine's
   std::string command_line;     // as typed, shell-quoted: run.json records it
+  std::vector<std::string> arguments;  // the words after `recoil`, as given
 };
 
 using Action = std::function<int()>;

@@ -38,7 +38,10 @@ int main(int argc, char** argv) {
 
   cli::GlobalOptions global;
   global.command_line = "recoil";
-  for (int i = 1; i < argc; ++i) global.command_line += " " + cli::shell_word(argv[i]);
+  for (int i = 1; i < argc; ++i) {
+    global.arguments.emplace_back(argv[i]);
+    global.command_line += " " + cli::shell_word(argv[i]);
+  }
   app.add_flag("-q,--quiet", global.quiet, "No progress bar or summary lines")->configurable(false);
   app.add_flag("--log-json", global.log_json,
                "Machine-readable lines (JSON) on stderr: progress, the summary, an error (-q does not silence them)");
