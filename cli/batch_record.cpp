@@ -20,7 +20,8 @@ InputStamp stamp(const fs::path& file) {
   const auto time = fs::last_write_time(file, ec);
   if (ec) return out;
   out.size = static_cast<long long>(size);
-  out.mtime_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(time.time_since_epoch()).count();
+  const auto unix_time = std::chrono::file_clock::to_sys(time);  // libstdc++'s file clock has an epoch of its own
+  out.mtime_ns = std::chrono::duration_cast<std::chrono::nanoseconds>(unix_time.time_since_epoch()).count();
   return out;
 }
 

@@ -15,7 +15,7 @@ namespace recoil::cli {
 struct InputStamp {
   std::string path;
   long long size = -1;      // bytes
-  long long mtime_ns = 0;   // nanoseconds since the file clock's epoch
+  long long mtime_ns = 0;   // nanoseconds since the Unix epoch
   bool operator==(const InputStamp&) const = default;
 };
 

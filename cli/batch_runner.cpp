@@ -90,7 +90,11 @@ std::string failure_message(const fs::path& log, int status) {
   while (std::getline(in, line))
     if (line.rfind("recoil: ", 0) == 0 && line.find("error") != std::string::npos) found = line.substr(8);
   if (!found.empty()) return found.rfind("error: ", 0) == 0 ? found.substr(7) : found;
-  if (WIFSIGNALED(status)) return "killed by signal " + std::to_string(WTERMSIG(status));
+  if (WIFSIGNALED(status))
+    return "killed by " + signal_name(WTERMSIG(status)) +
+           (WTERMSIG(status) == SIGKILL ? " (the kernel's out-of-memory killer sends it, as do schedulers at a limit; "
+                                          "fewer --jobs leave each item more memory)"
+                                        : "");
   return "exit " + std::to_string(WEXITSTATUS(status));
 }
 
@@ -262,8 +266,15 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
 }
 
 int batch_exit_code(const std::vector<ItemRecord>& records) {
+  const auto severity = [](int code) {
+    if (code <= static_cast<int>(ErrorKind::internal)) return code;
+    const int signal_number = code - 128;  // the shell's convention, which recoil's own interrupts follow too
+    const bool from_outside = signal_number == SIGKILL || signal_number == SIGTERM || signal_number == SIGINT ||
+                              signal_number == SIGHUP || signal_number == SIGXCPU;
+    return static_cast<int>(from_outside ? ErrorKind::output_failed : ErrorKind::internal);
+  };
   int code = 0;
-  for (const ItemRecord& r : records) code = std::max(code, r.exit_code > 5 ? 5 : r.exit_code);
+  for (const ItemRecord& r : records) code = std::max(code, severity(r.exit_code));
   return code;
 }
 

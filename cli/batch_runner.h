@@ -27,7 +27,10 @@ std::vector<ItemRecord> run_batch_items(const std::vector<BatchItem>& items, con
                                         const GlobalOptions& global);
 
 // The batch's exit code: 0 when every record succeeded, else the most severe
-// item's (the largest; a process killed by a signal counts as internal, 5).
+// item's (the largest). An item stopped by a signal from outside (SIGKILL,
+// which the kernel's out-of-memory killer sends, or SIGTERM, SIGINT, SIGHUP,
+// SIGXCPU: a scheduler's limits) counts as retryable, 4; one that crashed
+// (SIGSEGV, SIGABRT, ...) as internal, 5.
 int batch_exit_code(const std::vector<ItemRecord>& records);
 
 }  // namespace recoil::cli

@@ -89,9 +89,8 @@ InterruptScope::~InterruptScope() {
 int pending_interrupt() { return g_interrupt_signal.load(); }
 
 std::string signal_name(int signal_number) {
-  if (signal_number == SIGINT) return "SIGINT";
-  if (signal_number == SIGTERM) return "SIGTERM";
-  return "signal " + std::to_string(signal_number);
+  const char* abbreviation = ::sigabbrev_np(signal_number);  // "INT", "KILL"; null for an unknown number
+  return abbreviation != nullptr ? std::string("SIG") + abbreviation : "signal " + std::to_string(signal_number);
 }
 
 }  // namespace recoil::cli

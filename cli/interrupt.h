@@ -26,7 +26,7 @@ int pending_interrupt();
 // are parsed; an InterruptScope restores it when it ends.
 void report_interrupts_outside_the_loops(bool log_json);
 
-// "SIGINT", "SIGTERM" (or "signal N").
+// "SIGINT", "SIGKILL", ... (or "signal N" for a number with no name).
 std::string signal_name(int signal_number);
 
 }  // namespace recoil::cli

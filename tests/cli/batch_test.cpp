@@ -5,6 +5,7 @@
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/file.h>
+#include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -180,6 +181,13 @@ TEST(BatchCommand, ARerunRedoesTheItemsWhoseInputFilesChanged) {
     return items;
   };
   EXPECT_EQ(ran(), (std::set<int>{0, 1}));
+  // The stamp's time is the file's, counted from the Unix epoch as stat(1) counts it.
+  const json stamp = json::parse(file_bytes(dir / "out/model/item.json"))["inputs"][0];
+  EXPECT_EQ(stamp["path"], (dir / "model.off").string());
+  struct stat status {};
+  ASSERT_EQ(::stat((dir / "model.off").c_str(), &status), 0);
+  EXPECT_EQ(stamp["mtime_ns"].get<long long>(),
+            static_cast<long long>(status.st_mtim.tv_sec) * 1000000000LL + status.st_mtim.tv_nsec);
   EXPECT_EQ(ran(), (std::set<int>{}));
   const std::string cube = file_bytes(dir / "out/model/frame_0001.png");
   fs::copy_file(kModels / "OFF/Wuson.off", dir / "model.off", fs::copy_options::overwrite_existing);

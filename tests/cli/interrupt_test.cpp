@@ -1,7 +1,8 @@
 // Stopping `recoil run` with SIGINT or SIGTERM and finishing it with
 // --resume: the exit codes, run.json's status, no temporary left behind, and
 // frames byte-identical to an uninterrupted run; --resume also draws again
-// the frames a crash cut short and removes the temporaries it left.
+// the frames a crash cut short and removes the temporaries it left. A batch
+// item killed from outside is a retryable failure.
 #include <fcntl.h>
 #include <signal.h>
 #include <sys/wait.h>
@@ -110,6 +111,20 @@ bool wait_for_file(pid_t pid, const fs::path& file, int* status) {
   return true;
 }
 
+// Polls until process `pid` has a child and returns the child's pid; 0 when
+// `pid` ended first.
+pid_t wait_for_child(pid_t pid) {
+  const fs::path children = "/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children";
+  for (;;) {
+    int status = 0;
+    if (::waitpid(pid, &status, WNOHANG) == pid) return 0;
+    std::ifstream in(children);
+    pid_t child = 0;
+    if (in >> child) return child;
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+}
+
 int exit_code_of(pid_t pid) {
   int status = 0;
   if (::waitpid(pid, &status, 0) != pid) return -1;
@@ -181,16 +196,7 @@ TEST(InterruptRun, ASignalWhileTheMeshIsReadIsReported) {
     if (signal_number == SIGTERM) args.insert(args.begin(), "--log-json");
     const pid_t pid = start_recoil(args, err);
     ASSERT_GT(pid, 0);
-    const fs::path children = "/proc/" + std::to_string(pid) + "/task/" + std::to_string(pid) + "/children";
-    bool reading = false;
-    while (!reading) {
-      int status = 0;
-      ASSERT_NE(::waitpid(pid, &status, WNOHANG), pid) << "it ended before reading: " << file_bytes(err);
-      std::ifstream in(children);
-      std::string child;
-      reading = static_cast<bool>(in >> child);
-      std::this_thread::sleep_for(std::chrono::milliseconds(1));
-    }
+    ASSERT_GT(wait_for_child(pid), 0) << "it ended before reading: " << file_bytes(err);
     ::kill(-pid, signal_number);
     EXPECT_EQ(exit_code_of(pid), 128 + signal_number);
     const std::string message = "interrupted by " + std::string(signal_number == SIGINT ? "SIGINT" : "SIGTERM") +
@@ -205,6 +211,28 @@ TEST(InterruptRun, ASignalWhileTheMeshIsReadIsReported) {
     }
     EXPECT_FALSE(fs::exists(out));
   }
+}
+
+// A batch item killed from outside (SIGKILL, as the kernel's out-of-memory
+// killer sends it) is a failed item that a rerun may retry, not a bug: the
+// batch exits 4, and batch.json names the signal.
+TEST(InterruptBatch, AnItemKilledFromOutsideIsRetryable) {
+  const fs::path dir = scratch_dir("interrupt_batch_item");
+  write_tiny_box_scene(dir);
+  std::ofstream(dir / "manifest.json") << R"([{"scene": "tiny-box.json"}])";
+  const fs::path out = dir / "out";
+  const pid_t pid = start_recoil({"batch", (dir / "manifest.json").string(), "-q", "-o", out.string()},
+                                 dir / "stderr.txt");
+  ASSERT_GT(pid, 0);
+  const pid_t item = wait_for_child(pid);
+  ASSERT_GT(item, 0) << "the batch ended before its item started: " << file_bytes(dir / "stderr.txt");
+  ::kill(item, SIGKILL);
+  EXPECT_EQ(exit_code_of(pid), 4) << file_bytes(dir / "stderr.txt");
+  const json record = json::parse(file_bytes(out / "batch.json"));
+  const json& entry = record["items"][0];
+  EXPECT_EQ(entry["status"], "failed");
+  EXPECT_EQ(entry["exit_code"], 128 + SIGKILL);
+  EXPECT_NE(entry["message"].get<std::string>().find("killed by SIGKILL"), std::string::npos) << entry;
 }
 
 TEST(InterruptRun, SigtermExits143WithRunJsonInterrupted) {
