@@ -38,6 +38,10 @@ void print_table(const std::vector<PairResult>& results, const PairPlan& plan, c
   std::printf("%-7s %10s %9s %8s %8s  %s\n", "status", "failing", "max diff", "PSNR dB", "SSIM", "frame");
   for (const PairResult& r : results) {
     const render::ImageComparison& m = r.metrics;
+    if (!r.error.empty()) {
+      std::printf("%-7s %48s  %s (%s)\n", "ERROR", "", pair_label(r, plan.directory_mode).c_str(), r.error.c_str());
+      continue;
+    }
     std::printf("%-7s %9.4f%% %9.4f %8s %8.5f  %s\n", r.pass ? "pass" : "FAIL", m.failing_fraction * 100.0,
                 m.max_difference, m.psnr ? format_number("%.2f", *m.psnr).c_str() : "inf", m.ssim,
                 pair_label(r, plan.directory_mode).c_str());
@@ -46,22 +50,29 @@ void print_table(const std::vector<PairResult>& results, const PairPlan& plan, c
   for (const fs::path& p : plan.extra) std::printf("%-7s %48s  %s\n", "extra", "", p.filename().c_str());
   const size_t failing = static_cast<size_t>(std::count_if(results.begin(), results.end(),
                                                            [](const PairResult& r) { return !r.pass; }));
-  std::printf("%s: %zu of %zu pair(s) beyond tolerance, %zu missing, %zu extra (threshold %g, max failing %g)\n",
-              pass ? "PASS" : "FAIL", failing, results.size(), plan.missing.size(), plan.extra.size(),
-              options.threshold, options.max_failing);
+  const size_t errors = static_cast<size_t>(std::count_if(results.begin(), results.end(),
+                                                          [](const PairResult& r) { return !r.error.empty(); }));
+  std::printf("%s: %zu of %zu pair(s) beyond tolerance%s, %zu missing, %zu extra (threshold %g, max failing %g)\n",
+              pass ? "PASS" : "FAIL", failing - errors, results.size(),
+              errors > 0 ? (", " + std::to_string(errors) + " could not be compared").c_str() : "",
+              plan.missing.size(), plan.extra.size(), options.threshold, options.max_failing);
 }
 
 nlohmann::ordered_json to_json(const std::vector<PairResult>& results, const PairPlan& plan, bool pass) {
   nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
   for (const PairResult& r : results) {
     const render::ImageComparison& m = r.metrics;
-    pairs.push_back({{"actual", r.actual.string()},
-                     {"reference", r.reference.string()},
-                     {"pass", r.pass},
-                     {"failing_fraction", m.failing_fraction},
-                     {"max_difference", m.max_difference},
-                     {"psnr", m.psnr ? nlohmann::ordered_json(*m.psnr) : nlohmann::ordered_json(nullptr)},
-                     {"ssim", m.ssim}});
+    nlohmann::ordered_json pair = {{"actual", r.actual.string()}, {"reference", r.reference.string()}, {"pass", r.pass}};
+    if (!r.error.empty()) {
+      pair["error"] = r.error;
+      for (const char* metric : {"failing_fraction", "max_difference", "psnr", "ssim"}) pair[metric] = nullptr;
+    } else {
+      pair["failing_fraction"] = m.failing_fraction;
+      pair["max_difference"] = m.max_difference;
+      pair["psnr"] = m.psnr ? nlohmann::ordered_json(*m.psnr) : nlohmann::ordered_json(nullptr);
+      pair["ssim"] = m.ssim;
+    }
+    pairs.push_back(pair);
   }
   auto paths = [](const std::vector<fs::path>& list) {
     nlohmann::ordered_json out = nlohmann::ordered_json::array();
@@ -90,8 +101,28 @@ void check_diff_dir(const CompareOptions& options, const PairPlan& plan) {
     }
 }
 
+// --update: the actual frame replaces the reference of every failing pair
+// (one of another size too, once the actual frame reads as a PNG), and
+// extra frames are added to REF (created if need be); a reference with no
+// actual frame (missing) is kept.
+void update_references(const std::vector<PairResult>& results, const PairPlan& plan, const GlobalOptions& global) {
+  size_t updated = 0, added = 0;
+  for (const PairResult& r : results)
+    if (!r.pass && r.actual_readable) {
+      copy_file_atomically(r.actual, r.reference);
+      ++updated;
+    }
+  if (!plan.extra.empty() && plan.directory_mode) ensure_output_dir(plan.reference_root);
+  for (const fs::path& frame : plan.extra) {
+    copy_file_atomically(frame, plan.directory_mode ? plan.reference_root / frame.filename() : plan.reference_root);
+    ++added;
+  }
+  if (!global.quiet)
+    std::cerr << "recoil: updated " << updated << " reference frame(s), added " << added << " new one(s)\n";
+}
+
 int run_compare(const CompareOptions& options, const GlobalOptions& global) {
-  const PairPlan plan = plan_pairs(options.actual, options.reference);
+  const PairPlan plan = plan_pairs(options.actual, options.reference, options.update);
   check_diff_dir(options, plan);
   CompareSettings settings;
   settings.threshold = options.threshold;
@@ -119,15 +150,14 @@ int run_compare(const CompareOptions& options, const GlobalOptions& global) {
     write_html_report(options.report, results, plan, report);
     if (!global.quiet) std::cerr << "recoil: wrote report " << options.report << "\n";
   }
-  if (options.update) {
-    size_t updated = 0;
-    for (const PairResult& r : results)
-      if (!r.pass) {
-        copy_file_atomically(r.actual, r.reference);
-        ++updated;
-      }
-    if (!global.quiet) std::cerr << "recoil: updated " << updated << " reference frame(s)\n";
-  }
+  if (options.update) update_references(results, plan, global);
+  // A pair that could not be compared is an error (exit 2), raised once every pair is reported.
+  std::vector<std::string> errors;
+  for (const PairResult& r : results)
+    if (!r.error.empty()) errors.push_back(r.error);
+  if (errors.size() == 1) throw bad_input(errors.front());
+  if (errors.size() > 1)
+    throw bad_input(std::to_string(errors.size()) + " pairs could not be compared; the first: " + errors.front());
   return pass ? 0 : 1;
 }
 
@@ -159,21 +189,24 @@ void add_compare_command(CLI::App& app, const GlobalOptions& global, Action& act
       ->type_name("FILE.html");
   cmd->add_flag("--json", options->json, "Print the metrics as JSON on stdout instead of a table");
   cmd->add_flag("--update", options->update,
-                "After reporting, copy actual over reference for the failing pairs only (accept new renders)");
+                "After reporting, copy actual over reference for the failing pairs only, and add extra frames "
+                "(accept new renders; creates REF)");
   cmd->footer(
       "Visual regression: compare an actual frame with a reference frame, or two directories\n"
       "of frames paired by file name (*.png). Images are composited over black; a pixel fails\n"
       "when its largest channel difference exceeds --threshold, and a pair fails when more\n"
       "than --max-failing of its pixels fail. Reports failing fraction, max difference, PSNR\n"
       "and SSIM (as scikit-image's, Gaussian window), worst first.\n"
-      "Exit 0 within tolerance, 1 beyond it or frames missing, 2 on bad input (size mismatch,\n"
-      "unreadable PNG, a file compared with a directory).\n\n"
+      "Exit 0 within tolerance, 1 beyond it or frames missing, 2 on bad input (a file compared\n"
+      "with a directory; a pair of different sizes or an unreadable PNG, reported with the rest).\n\n"
       "Examples:\n"
       "  recoil compare out/frame_0001.png golden/frame_0001.png\n"
       "  recoil compare out/ golden/ --diff diffs/ --report report.html\n"
       "  recoil compare out/ golden/ --threshold 0.05 --max-failing 0.01 --json > metrics.json\n"
       "  recoil compare out/ golden/ --update      # accept the new look of the frames that changed\n"
-      "Missing frames (in REF, not in ACTUAL) fail the comparison; extra frames are listed only.");
+      "Missing frames (in REF, not in ACTUAL) fail the comparison; extra frames are listed only.\n"
+      "--update replaces the reference of each failing pair (one of another size too), adds the\n"
+      "extra frames to REF, creating REF when it is not there yet, and keeps missing ones.");
   cmd->callback([options, &global, &action] {
     action = [options, &global] { return run_compare(*options, global); };
   });

@@ -43,11 +43,22 @@ std::map<std::string, fs::path> png_files(const fs::path& dir) {
   return files;
 }
 
+bool readable_png(const fs::path& path) {
+  try {
+    render::read_png(path);
+    return true;
+  } catch (const Error&) {
+    return false;
+  }
+}
+
 }  // namespace
 
-PairPlan plan_pairs(const fs::path& actual, const fs::path& reference) {
+PairPlan plan_pairs(const fs::path& actual, const fs::path& reference, bool creating_references) {
   const PathKind actual_kind = kind_of(actual);
-  const PathKind reference_kind = kind_of(reference);
+  PathKind reference_kind = kind_of(reference);
+  // References to be created take the form of what they are made from.
+  if (creating_references && reference_kind == PathKind::missing) reference_kind = actual_kind;
   for (const auto& [path, kind, role] : {std::tuple{actual, actual_kind, "ACTUAL"},
                                          std::tuple{reference, reference_kind, "REF"}}) {
     if (kind == PathKind::missing) throw bad_input(std::string(role) + " " + path.string() + " does not exist");
@@ -60,16 +71,24 @@ PairPlan plan_pairs(const fs::path& actual, const fs::path& reference) {
                     " (" + reference.string() + "): give two PNG files or two directories");
 
   PairPlan plan;
+  plan.reference_root = reference;
+  std::error_code ec;
+  const bool reference_exists = fs::exists(reference, ec);
   if (actual_kind == PathKind::file) {
-    plan.actual.push_back(actual);
-    plan.reference.push_back(reference);
+    if (reference_exists) {
+      plan.actual.push_back(actual);
+      plan.reference.push_back(reference);
+    } else {
+      plan.extra.push_back(actual);
+    }
     return plan;
   }
   plan.directory_mode = true;
   const std::map<std::string, fs::path> actual_files = png_files(actual);
-  const std::map<std::string, fs::path> reference_files = png_files(reference);
-  if (reference_files.empty())
-    throw bad_input("reference directory " + reference.string() + " holds no *.png files");
+  const std::map<std::string, fs::path> reference_files =
+      reference_exists ? png_files(reference) : std::map<std::string, fs::path>{};
+  if (reference_files.empty() && !creating_references)
+    throw bad_input("reference directory " + reference.string() + " holds no *.png files (--update creates them)");
   for (const auto& [name, path] : reference_files) {
     const auto match = actual_files.find(name);
     if (match == actual_files.end()) {
@@ -107,6 +126,16 @@ std::vector<PairResult> compare_pairs(const PairPlan& plan, const CompareSetting
           if (!settings.diff_dir.empty()) render::write_png(settings.diff_dir / r.actual.filename(), heat);
           if (settings.report_images) prepare_report_images(r, loaded.actual, loaded.reference, heat);
         }
+      } catch (const Error& e) {
+        if (e.kind() != ErrorKind::bad_input) {
+          errors[i] = std::current_exception();
+        } else {
+          PairResult& r = results[i];
+          r.error = e.what();
+          r.pass = false;
+          r.metrics = render::ImageComparison{};
+          r.actual_readable = readable_png(r.actual);
+        }
       } catch (...) {
         errors[i] = std::current_exception();
       }
@@ -132,8 +161,8 @@ void sort_worst_first(std::vector<PairResult>& results) {
   std::stable_sort(results.begin(), results.end(), [](const PairResult& a, const PairResult& b) {
     const render::ImageComparison& ma = a.metrics;
     const render::ImageComparison& mb = b.metrics;
-    return std::tuple(a.pass, -ma.failing_fraction, -ma.max_difference, ma.ssim, a.actual.string()) <
-           std::tuple(b.pass, -mb.failing_fraction, -mb.max_difference, mb.ssim, b.actual.string());
+    return std::tuple(a.pass, a.error.empty(), -ma.failing_fraction, -ma.max_difference, ma.ssim, a.actual.string()) <
+           std::tuple(b.pass, b.error.empty(), -mb.failing_fraction, -mb.max_difference, mb.ssim, b.actual.string());
   });
 }
 

@@ -15,6 +15,7 @@ namespace recoil::cli {
 // pair by file name. Sorted by name so every run lists them in the same order.
 struct PairPlan {
   bool directory_mode = false;
+  std::filesystem::path reference_root;          // REF as given: where --update puts extra frames
   std::vector<std::filesystem::path> actual;     // pairs[i] = (actual[i], reference[i])
   std::vector<std::filesystem::path> reference;
   std::vector<std::filesystem::path> missing;    // in REF but not in ACTUAL (reference paths)
@@ -23,13 +24,21 @@ struct PairPlan {
 
 // Throws recoil::Error(bad_input) naming the path when one does not exist,
 // when a file is mixed with a directory, or when REF holds no *.png file.
-PairPlan plan_pairs(const std::filesystem::path& actual, const std::filesystem::path& reference);
+// `creating_references` (--update) lets REF be missing or hold no *.png:
+// every actual frame is then extra, for the update to copy into REF.
+PairPlan plan_pairs(const std::filesystem::path& actual, const std::filesystem::path& reference,
+                    bool creating_references = false);
 
 struct PairResult {
   std::filesystem::path actual;
   std::filesystem::path reference;
   render::ImageComparison metrics;
   bool pass = true;
+  // Why the pair could not be compared (sizes differ, a PNG cannot be read):
+  // the pair fails, with no metrics, and the command exits 2 once every
+  // pair is reported. `actual_readable` says whether --update may copy it.
+  std::string error;
+  bool actual_readable = true;
   // Only when a report is written (see compare_report.h): the full-size heat
   // map as PNG for failing pairs, and small PNGs of reference, actual and heat map.
   std::vector<std::uint8_t> diff_png;
@@ -48,13 +57,15 @@ struct CompareSettings {
 };
 
 // Decodes and compares every planned pair, several at once, in plan order.
-// Each result lands at its own index, so nothing depends on scheduling; the
-// first error by pair index is rethrown (recoil::Error naming the files).
+// Each result lands at its own index, so nothing depends on scheduling. A
+// pair that cannot be compared (bad input) records why in its `error`; any
+// other failure (a heat map that cannot be written) is rethrown, the first
+// by pair index.
 std::vector<PairResult> compare_pairs(const PairPlan& plan, const CompareSettings& settings);
 
-// Worst first: failing pairs before passing ones, then larger failing
-// fraction, then larger max difference, then lower SSIM, then by path (so
-// ties keep a fixed order).
+// Worst first: failing pairs before passing ones, those that could not be
+// compared first among them, then larger failing fraction, then larger max
+// difference, then lower SSIM, then by path (so ties keep a fixed order).
 void sort_worst_first(std::vector<PairResult>& results);
 
 // The label of a pair in tables and reports: the file name in directory mode,

@@ -72,6 +72,12 @@ void write_index(std::ostream& out, const std::vector<PairResult>& results, bool
   for (size_t index = 0; index < results.size(); ++index) {
     const PairResult& r = results[index];
     const render::ImageComparison& m = r.metrics;
+    if (!r.error.empty()) {
+      out << "<tr class=\"fail\"><td><span class=\"verdict\">ERROR</span></td><td colspan=\"4\">"
+          << html_escape(r.error) << "</td><td><a href=\"#pair-" << index << "\">"
+          << html_escape(pair_label(r, directory_mode)) << "</a></td></tr>\n";
+      continue;
+    }
     out << "<tr class=\"" << (r.pass ? "pass" : "fail") << "\"><td><span class=\"verdict\">"
         << (r.pass ? "pass" : "FAIL") << "</span></td><td>" << format_number("%.4f", m.failing_fraction * 100.0)
         << "</td><td>" << format_number("%.4f", m.max_difference) << "</td><td>"
@@ -166,6 +172,12 @@ void write_html_report(const fs::path& path, const std::vector<PairResult>& resu
   for (size_t index = 0; index < results.size(); ++index) {
     const PairResult& r = results[index];
     const render::ImageComparison& m = r.metrics;
+    if (!r.error.empty()) {
+      out << "<section class=\"pair fail\" id=\"pair-" << index << "\">\n<h2><span class=\"verdict\">ERROR</span> "
+          << html_escape(pair_label(r, settings.directory_mode)) << "</h2>\n<div class=\"metrics\">"
+          << html_escape(r.error) << "</div>\n</section>\n";
+      continue;
+    }
     out << "<section class=\"pair " << (r.pass ? "pass" : "fail") << "\" id=\"pair-" << index
         << "\">\n<h2><span class=\"verdict\">"
         << (r.pass ? "pass" : "FAIL") << "</span> " << html_escape(pair_label(r, settings.directory_mode))

@@ -206,6 +206,63 @@ TEST(CompareCli, UpdateTouchesOnlyFailingPairs) {
     EXPECT_EQ(entry.path().extension(), ".png") << "temporary left behind: " << entry.path();
 }
 
+// In directory mode a pair that cannot be compared (another size, a PNG that
+// does not read) is reported with the rest, not in place of them, and the
+// command then exits 2; --update accepts a new size, never an unreadable
+// frame, adds the extra frames and keeps the missing ones.
+TEST(CompareCli, PairsThatCannotBeComparedAreReportedWithTheRestAndUpdateAcceptsANewSize) {
+  const fs::path dir = scratch_dir("compare_sizes");
+  fs::create_directories(dir / "actual");
+  fs::create_directories(dir / "ref");
+  for (int i = 1; i <= 3; ++i) render::write_png(dir / "ref" / numbered(i), frame(16, 16, i));
+  render::write_png(dir / "ref/gone.png", frame(16, 16, 9));
+  render::write_png(dir / "actual" / numbered(1), frame(16, 16, 1));
+  render::write_png(dir / "actual" / numbered(2), frame(20, 16, 2));  // resized
+  std::ofstream(dir / "actual" / numbered(3)) << "cut short";         // unreadable
+  render::write_png(dir / "actual/new.png", frame(16, 16, 7));
+  const std::string args = "compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "ref");
+
+  const CommandResult table = run_recoil(args);
+  EXPECT_EQ(table.exit_code, 2) << table.err;
+  EXPECT_NE(table.out.find("pass       0.0000%"), std::string::npos) << table.out;
+  EXPECT_EQ(count(table.out, "ERROR"), 2u) << table.out;
+  EXPECT_NE(table.out.find("image size mismatch: actual is 20x16, reference is 16x16"), std::string::npos) << table.out;
+  EXPECT_NE(table.err.find("recoil: error: 2 pairs could not be compared"), std::string::npos) << table.err;
+  const CommandResult json = run_recoil(args + " --json");
+  EXPECT_EQ(json.exit_code, 2);
+  const nlohmann::json j = nlohmann::json::parse(json.out);
+  ASSERT_EQ(j["pairs"].size(), 3u);
+  EXPECT_FALSE(j["pass"].get<bool>());
+  EXPECT_TRUE(j["pairs"][0].contains("error")) << j;  // worst first
+  EXPECT_TRUE(j["pairs"][0]["ssim"].is_null()) << j;
+  EXPECT_FALSE(j["pairs"][2].contains("error")) << j;
+  EXPECT_EQ(j["pairs"][2]["ssim"], 1.0) << j;
+  EXPECT_EQ(run_recoil(args + " --report " + shell_quote(dir / "report.html")).exit_code, 2);
+  EXPECT_EQ(count(file_bytes(dir / "report.html"), "image size mismatch"), 2u) << "index line and section";
+
+  const CommandResult update = run_recoil(args + " --update");
+  EXPECT_EQ(update.exit_code, 2) << "the comparison itself failed; --update does not change the verdict";
+  EXPECT_NE(update.err.find("updated 1 reference frame(s), added 1 new one(s)"), std::string::npos) << update.err;
+  EXPECT_EQ(file_bytes(dir / "ref" / numbered(2)), file_bytes(dir / "actual" / numbered(2)));
+  EXPECT_EQ(render::read_png(dir / "ref" / numbered(3)).width, 16) << "an unreadable frame is never accepted";
+  EXPECT_EQ(file_bytes(dir / "ref/new.png"), file_bytes(dir / "actual/new.png"));
+  EXPECT_TRUE(fs::exists(dir / "ref/gone.png"));
+
+  // References made from nothing: a REF that is not there yet is created.
+  fs::remove(dir / "actual" / numbered(3));
+  const CommandResult created = run_recoil("compare " + shell_quote(dir / "actual") + " " +
+                                           shell_quote(dir / "fresh/golden") + " --update");
+  EXPECT_EQ(created.exit_code, 0) << created.err;
+  for (const char* name : {"f1.png", "f2.png", "new.png"})
+    EXPECT_EQ(file_bytes(dir / "fresh/golden" / name), file_bytes(dir / "actual" / name)) << name;
+  const CommandResult one = run_recoil("compare " + shell_quote(dir / "actual/new.png") + " " +
+                                       shell_quote(dir / "fresh/one.png") + " --update");
+  EXPECT_EQ(one.exit_code, 0) << one.err;
+  EXPECT_EQ(file_bytes(dir / "fresh/one.png"), file_bytes(dir / "actual/new.png"));
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "nowhere")).exit_code, 2)
+      << "without --update a missing REF is a wrong path";
+}
+
 TEST(CompareCli, ReportEmbedsThreeImagesPerPairWorstFirst) {
   const fs::path dir = scratch_dir("compare_report");
   fs::create_directories(dir / "actual");
