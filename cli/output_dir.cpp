@@ -52,9 +52,9 @@ int remove_stale_temporaries(const fs::path& dir) {
 
 namespace recoil::cli {
 
-RemovedFrames remove_frames_past(const fs::path& dir, int frame_count) {
+RemovedFrames remove_foreign_frames(const fs::path& dir, int frame_count, const std::vector<int>* only) {
   // frame_ + digits + .png as some run names its frames, and not a name this run's frames have.
-  const auto is_foreign_frame = [frame_count](const std::string& name, long& number) {
+  const auto is_foreign_frame = [frame_count, only](const std::string& name, long& number) {
     const std::string prefix = "frame_", suffix = ".png";
     if (name.size() <= prefix.size() + suffix.size() || name.rfind(prefix, 0) != 0 ||
         name.compare(name.size() - suffix.size(), suffix.size(), suffix) != 0)
@@ -64,7 +64,9 @@ RemovedFrames remove_frames_past(const fs::path& dir, int frame_count) {
     if (digits.size() < 4 || digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), [](char c) { return c >= '0' && c <= '9'; }))
       return false;
     number = std::stol(digits);
-    return number < 1 || number > frame_count || frame_file_name(static_cast<int>(number), frame_count) != name;
+    if (number < 1 || number > frame_count || frame_file_name(static_cast<int>(number), frame_count) != name)
+      return true;
+    return only != nullptr && !std::binary_search(only->begin(), only->end(), static_cast<int>(number));
   };
   std::vector<std::pair<long, fs::path>> foreign;
   std::error_code ec;

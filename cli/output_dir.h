@@ -2,6 +2,7 @@
 // Output folders: the default place for a run's products and their creation.
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace recoil::cli {
 
@@ -27,15 +28,18 @@ int remove_stale_temporaries(const std::filesystem::path& dir);
 
 namespace recoil::cli {
 
-// Deletes the frames an earlier run of another length left in `dir`: files
-// named frame_N.png that no frame of a `frame_count`-frame run is named
-// (N past it, or written with another number of digits: frame_names.h), so
-// the folder holds one run's frames. Returns how many, with the first and
-// last name in sequence order. Throws output_failed when one cannot be removed.
+// Deletes the frames an earlier run left in `dir` that this one has no part
+// in, so the folder holds one scene's frames: files named frame_N.png that no
+// frame of a `frame_count`-frame run is named (N past it, or written with
+// another number of digits: frame_names.h), and, when `only` is given (an
+// earlier run of another scene drew them), every frame whose number it does
+// not hold. Returns how many, with the first and last name in sequence
+// order. Throws output_failed when one cannot be removed.
 struct RemovedFrames {
   int count = 0;
   std::string first, last;
 };
-RemovedFrames remove_frames_past(const std::filesystem::path& dir, int frame_count);
+RemovedFrames remove_foreign_frames(const std::filesystem::path& dir, int frame_count,
+                                    const std::vector<int>* only = nullptr);
 
 }  // namespace recoil::cli

@@ -230,8 +230,10 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   ensure_output_dir(job.output_dir);
   remove_stale_temporaries(job.output_dir);
   const nlohmann::json resolved = resolved_scene(scene);
-  // Frames on disk are kept only when the run that drew them had this scene.
-  if (job.resume) result.resume_mismatch = difference_from_saved_scene(job.output_dir / "scene.json", resolved);
+  // Frames on disk are kept (--resume), or left beside this run's, only when
+  // the run that drew them had this scene.
+  const std::string another_scene = difference_from_saved_scene(job.output_dir / "scene.json", resolved);
+  if (job.resume) result.resume_mismatch = another_scene;
   write_text_atomically(job.output_dir / "scene.json", resolved.dump(2) + "\n");
   const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
   if (stats_path.has_parent_path()) ensure_output_dir(stats_path.parent_path());
@@ -361,9 +363,12 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     result.message = "interrupted by " + signal_name(result.interrupted_by) + " after " + std::to_string(next) +
                      " of " + std::to_string(selected.size()) + " frames; run the same command with --resume to finish";
   if (video && !result.failed && !result.interrupted_by) video->finish();
-  // A finished run leaves the folder one run's frames: a longer earlier run's tail goes.
+  // A finished run leaves the folder one scene's frames: a longer earlier
+  // run's tail goes, and all that another scene's run drew. A run without
+  // frames leaves them (its scene may differ only in how frames are drawn).
   if (job.render && !result.failed && !result.interrupted_by)
-    result.removed_frames = remove_frames_past(job.output_dir, name_count);
+    result.removed_frames =
+        remove_foreign_frames(job.output_dir, name_count, another_scene.empty() ? nullptr : &selected);
   report.timings.encode = writer ? writer->encode_ms() : 0.0;
   result.steps = world->counters().steps;
   result.quality = report.solve_quality(scene.world.contact.margin);

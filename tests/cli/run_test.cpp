@@ -254,6 +254,31 @@ TEST(RunCommand, ARerunRemovesTheFramesOfALongerRunAndSaysSo) {
   EXPECT_EQ(json::parse(file_bytes(dir / "run.json"))["frames"]["removed"], 2);
 }
 
+// Frames drawn for another scene never stay beside this one's: a rerun of
+// the same scene draws a subset among the frames it drew before, but one
+// whose scene differs (here only the resolution) removes every frame it
+// did not draw. A run without frames removes none.
+TEST(RunCommand, ARunOfAnotherSceneLeavesNoneOfTheOldScenesFrames) {
+  const fs::path dir = scratch_dir("run_other_scene");
+  const std::string scene = shell_quote(source_path("assets/scenes/validation/rest.json"));
+  const std::string out = " --msaa 0 -o " + shell_quote(dir);
+  ASSERT_EQ(run_recoil("run " + scene + " --frames 1-6 --resolution 32x32 -q" + out).exit_code, 0);
+  const CommandResult same = run_recoil("run " + scene + " --frames 1-2 --resolution 32x32" + out);
+  ASSERT_EQ(same.exit_code, 0) << same.err;
+  EXPECT_EQ(same.err.find("removed"), std::string::npos) << same.err;
+  for (int k = 1; k <= 6; ++k) EXPECT_TRUE(fs::exists(dir / ("frame_000" + std::to_string(k) + ".png"))) << k;
+  const CommandResult other = run_recoil("run " + scene + " --frames 1-2 --resolution 48x32" + out);
+  ASSERT_EQ(other.exit_code, 0) << other.err;
+  EXPECT_NE(other.err.find("removed 4 frames of another run (frame_0003.png to frame_0006.png)"), std::string::npos)
+      << other.err;
+  for (int k = 3; k <= 6; ++k) EXPECT_FALSE(fs::exists(dir / ("frame_000" + std::to_string(k) + ".png"))) << k;
+  EXPECT_EQ(render::read_png(dir / "frame_0001.png").width, 48);
+  const CommandResult none = run_recoil("run " + scene + " --frames 1-2 --no-render --resolution 64x32" + out);
+  ASSERT_EQ(none.exit_code, 0) << none.err;
+  EXPECT_EQ(none.err.find("removed"), std::string::npos) << none.err;
+  EXPECT_TRUE(fs::exists(dir / "frame_0001.png"));
+}
+
 // The shipped rollers example to its end: the soft ball is drawn through
 // the 12 cm gap between the rollers (it used to be squeezed into 2 cm, its
 // tets to a seventh of their volume, and the run blew up at frame 12) and
