@@ -124,6 +124,15 @@ void update_references(const std::vector<PairResult>& results, const PairPlan& p
 int run_compare(const CompareOptions& options, const GlobalOptions& global) {
   const PairPlan plan = plan_pairs(options.actual, options.reference, options.update);
   check_diff_dir(options, plan);
+  // The report's folder is made before the comparison, as --diff's is: a path
+  // that cannot be written fails at once, not after every pair is compared.
+  if (const fs::path folder = fs::path(options.report).parent_path(); !options.report.empty() && !folder.empty()) {
+    try {
+      ensure_output_dir(folder);
+    } catch (const Error& e) {
+      throw Error(e.kind(), "--report: " + std::string(e.what()));
+    }
+  }
   CompareSettings settings;
   settings.threshold = options.threshold;
   settings.max_failing = options.max_failing;

@@ -42,7 +42,7 @@ int main(int argc, char** argv) {
     global.arguments.emplace_back(argv[i]);
     global.command_line += " " + cli::shell_word(argv[i]);
   }
-  app.add_flag("-q,--quiet", global.quiet, "No progress bar or summary lines")->configurable(false);
+  app.add_flag("-q,--quiet", global.quiet, "No progress bar or summary lines (a summary that carries a warning still prints)")->configurable(false);
   app.add_flag("--log-json", global.log_json,
                "Machine-readable lines (JSON) on stderr: progress, the summary, an error (-q does not silence them)");
   app.add_option("--max-memory", global.max_memory_gib,

@@ -237,8 +237,9 @@ TEST(CompareCli, PairsThatCannotBeComparedAreReportedWithTheRestAndUpdateAccepts
   EXPECT_TRUE(j["pairs"][0]["ssim"].is_null()) << j;
   EXPECT_FALSE(j["pairs"][2].contains("error")) << j;
   EXPECT_EQ(j["pairs"][2]["ssim"], 1.0) << j;
-  EXPECT_EQ(run_recoil(args + " --report " + shell_quote(dir / "report.html")).exit_code, 2);
-  EXPECT_EQ(count(file_bytes(dir / "report.html"), "image size mismatch"), 2u) << "index line and section";
+  EXPECT_EQ(run_recoil(args + " --report " + shell_quote(dir / "reports/today/report.html")).exit_code, 2);
+  EXPECT_EQ(count(file_bytes(dir / "reports/today/report.html"), "image size mismatch"), 2u)
+      << "index line and section, in a folder the report made";
 
   const CommandResult update = run_recoil(args + " --update");
   EXPECT_EQ(update.exit_code, 2) << "the comparison itself failed; --update does not change the verdict";
