@@ -166,6 +166,10 @@ class World {
   // The contact stage: candidates for the contact-free prediction in m_dv,
   // then the contact solve (m_dv in: contact-free, out: with contacts).
   void collide_and_solve(StepReport& report);
+  // Where the contact solve's dv starts (ContactProblem::start_dv): the
+  // contact-free solution m_dv on the bodies that no row of `problem`
+  // touches, zero on the others.
+  Eigen::VectorXd contact_solve_start(const ContactProblem& problem) const;
   std::vector<ContactSurface> contact_surfaces() const;
   std::vector<ContactPlane> contact_planes() const;
   // Marks `report` runaway (naming the surface with the most candidates)

@@ -223,6 +223,7 @@ void World::collide_and_solve(StepReport& report) {
     report.profile.solve += ms_since(t);
     return;
   }
+  problem.start_dv = contact_solve_start(problem);
   const ContactSolverStats stats = solve_contacts(problem, m_contact.solver, m_dv, &model);
   model.remember(problem, m_memory);
   report.max_penetration = model.max_penetration(m_dv);
@@ -240,6 +241,20 @@ void World::collide_and_solve(StepReport& report) {
   report.solver_residual = stats.residual;
   report.solver_kkt = stats.kkt;
   report.solver_converged = stats.converged;
+}
+
+Eigen::VectorXd World::contact_solve_start(const ContactProblem& problem) const {
+  std::vector<char> touched(static_cast<size_t>(m_dv.size() / 3), 0);
+  for (const ContactRows& rows : problem.rows)
+    for (int node : rows.nodes) touched[static_cast<size_t>(node)] = 1;
+  Eigen::VectorXd start = Eigen::VectorXd::Zero(m_dv.size());
+  for (int i = 0; i < num_dynamic_bodies(); ++i) {
+    const DynamicBody body = dynamic_body(i);
+    const auto first = touched.begin() + body.first_node;
+    if (std::find(first, first + body.num_nodes, 1) != first + body.num_nodes) continue;
+    start.segment(3 * body.first_node, 3 * body.num_nodes) = m_dv.segment(3 * body.first_node, 3 * body.num_nodes);
+  }
+  return start;
 }
 
 void World::integrate() {

@@ -99,6 +99,13 @@ struct ContactProblem {
   std::vector<ContactRows> rows;         // one per contact
   std::vector<ContactState> states;      // same size as rows: in, the warm start; out, the solution
   ContactSoftness softness;              // zero: the rows hold exactly
+  // #DoF, or empty (zero): where cr's and cr_plain's dv starts. Zero suits a
+  // body in contact (resting contacts end near dv = 0); a body no row
+  // touches starts at its contact-free solution, which answers it exactly,
+  // so that it is no part of the Krylov solve's residual at all (one solve
+  // runs for every body, and a stiff one far from any contact kept a
+  // pushed crate's solve from converging).
+  Eigen::VectorXd start_dv;
 };
 
 enum class SolverMethod { cr, cr_plain, pgs };
