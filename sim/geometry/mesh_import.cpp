@@ -121,6 +121,9 @@ struct ReaderAnswer {
   std::vector<TextureSource> textures;
 };
 
+// Why a file whose meshes hold points or lines only cannot be a body.
+constexpr const char* kNoFaces = "it holds points or lines but no faces (a point cloud?); recoil needs a triangle surface";
+
 // Every mesh of the file at `path` under its node transforms, merged.
 ReaderAnswer read_with_assimp(const fs::path& path) {
   Assimp::Importer importer;
@@ -133,8 +136,7 @@ ReaderAnswer read_with_assimp(const fs::path& path) {
     std::string reason = importer.GetErrorString();
     if (reason.empty()) reason = "not a mesh file assimp can read";
     // A point cloud fails assimp's validation as "Mesh  contains no faces".
-    if (reason.find("contains no faces") != std::string::npos)
-      reason = "it holds points or lines but no faces (a point cloud?); recoil needs a triangle surface";
+    if (reason.find("contains no faces") != std::string::npos) reason = kNoFaces;
     throw bad_input(path.string() + ": cannot read mesh: " + reason);
   }
   Gathered gathered;
@@ -261,7 +263,12 @@ TriMesh import_surface(const fs::path& path, bool* turned_outward) {
   for (int v = 0; v < merged.num_vertices(); ++v)
     if (!merged.vertices.row(v).allFinite()) throw bad_input(path.string() + ": mesh has non-finite vertex coordinates");
   TriMesh clean = weld_and_clean(merged);
-  if (clean.empty()) throw bad_input(path.string() + ": mesh has no triangles");
+  if (merged.num_triangles() == 0) throw bad_input(path.string() + ": cannot read mesh: " + kNoFaces);
+  if (clean.empty())
+    throw bad_input(path.string() + ": mesh has no triangle with an area: " +
+                    (merged.num_triangles() == 1 ? std::string("its one triangle is")
+                                                 : "its " + std::to_string(merged.num_triangles()) + " triangles are") +
+                    " degenerate (corners repeated or in one line); recoil needs a triangle surface");
   // A closed surface wound inward bounds the same solid turned inside out:
   // turned over, its normals, back faces and mass read as that solid's.
   const MeshStats stats = compute_mesh_stats(clean);  // its volume is the signed enclosed one

@@ -73,12 +73,21 @@ TEST(MeshImport, FifoAndDeviceAreRefused) {
 
 // A point cloud is read by assimp, whose validation refuses it in its own
 // words ("Mesh  contains no faces"): the message says what the file lacks.
-TEST(MeshImport, APointCloudIsRefusedForItsMissingFaces) {
+TEST(MeshImport, APointCloudOrLinesAreRefusedForTheirMissingFaces) {
   const fs::path dir = test::scratch_dir("mesh_import_points");
   std::ofstream(dir / "points.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   const std::string e = test::bad_input_within_a_second([&] { import_surface(dir / "points.obj"); });
   expect_names(e, (dir / "points.obj").string());
   expect_names(e, "no faces (a point cloud?)");
+  // Lines only pass assimp's validation (they are faces to it) and are
+  // dropped by recoil: the same words, not an empty mesh.
+  std::ofstream(dir / "lines.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3\n";
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "lines.obj"); }),
+               "no faces (a point cloud?)");
+  // A face whose corners lie in one line has no area.
+  std::ofstream(dir / "flat.obj") << "v 0 0 0\nv 1 0 0\nv 2 0 0\nf 1 2 3\n";
+  expect_names(test::bad_input_within_a_second([&] { import_surface(dir / "flat.obj"); }),
+               "its one triangle is degenerate");
 }
 
 // assimp allocates what PLY and OFF headers declare, and searches forever for a missing end_header.
