@@ -164,6 +164,9 @@ BatchItem to_item(const JsonCursor& entry, const nlohmann::json& defaults, const
     if (std::find(kPathOptions.begin(), kPathOptions.end(), key) != kPathOptions.end()) {
       out.args.push_back(resolve(field));
     } else if (value.is_array()) {
+      if (option->get_expected_max() <= 1)
+        field.fail("--" + key + " takes one value, written as on the command line (`recoil " + out.mode +
+                   " --help`), not a list");
       for (const JsonCursor& element : field.elements()) out.args.push_back(option_value(element));
     } else {
       out.args.push_back(option_value(field));

@@ -12,6 +12,7 @@
 #include "cli/commands.h"
 #include "cli/file_io.h"
 #include "cli/format_number.h"
+#include "cli/number_range.h"
 #include "cli/output_dir.h"
 #include "cli/compare_pairs.h"
 #include "cli/compare_report.h"
@@ -58,7 +59,8 @@ void print_table(const std::vector<PairResult>& results, const PairPlan& plan, c
               plan.missing.size(), plan.extra.size(), options.threshold, options.max_failing);
 }
 
-nlohmann::ordered_json to_json(const std::vector<PairResult>& results, const PairPlan& plan, bool pass) {
+nlohmann::ordered_json to_json(const std::vector<PairResult>& results, const PairPlan& plan, bool pass,
+                               const CompareOptions& options) {
   nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
   for (const PairResult& r : results) {
     const render::ImageComparison& m = r.metrics;
@@ -79,7 +81,12 @@ nlohmann::ordered_json to_json(const std::vector<PairResult>& results, const Pai
     for (const fs::path& p : list) out.push_back(p.string());
     return out;
   };
-  return {{"pass", pass}, {"pairs", pairs}, {"missing", paths(plan.missing)}, {"extra", paths(plan.extra)}};
+  return {{"pass", pass},
+          {"pairs", pairs},
+          {"missing", paths(plan.missing)},
+          {"extra", paths(plan.extra)},
+          {"threshold", options.threshold},
+          {"max_failing", options.max_failing}};
 }
 
 // --diff must not be a folder of the inputs: heat maps are named like the
@@ -117,8 +124,13 @@ void update_references(const std::vector<PairResult>& results, const PairPlan& p
     copy_file_atomically(frame, plan.directory_mode ? plan.reference_root / frame.filename() : plan.reference_root);
     ++added;
   }
-  if (!global.quiet)
-    std::cerr << "recoil: updated " << updated << " reference frame(s), added " << added << " new one(s)\n";
+  if (!global.quiet) {
+    std::cerr << "recoil: updated " << updated << " reference frame(s), added " << added << " new one(s)";
+    if (!plan.missing.empty())
+      std::cerr << "; kept " << plan.missing.size()
+                << " with no actual frame (missing), which fail every comparison until removed from REF";
+    std::cerr << "\n";
+  }
 }
 
 int run_compare(const CompareOptions& options, const GlobalOptions& global) {
@@ -147,7 +159,7 @@ int run_compare(const CompareOptions& options, const GlobalOptions& global) {
 
   if (options.json) {
     // Paths are bytes; a name that is not UTF-8 is shown with U+FFFD rather than aborting.
-    std::cout << to_json(results, plan, pass).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace)
+    std::cout << to_json(results, plan, pass, options).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace)
               << std::endl;
   } else if (!global.quiet) {
     print_table(results, plan, options, pass);
@@ -184,11 +196,11 @@ void add_compare_command(CLI::App& app, const GlobalOptions& global, Action& act
       ->type_name("PATH");
   cmd->add_option("--threshold", options->threshold, "Per-pixel difference in [0,1] above which a pixel fails")
       ->type_name("T")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(NumberIn(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--max-failing", options->max_failing, "Largest fraction of failing pixels a pair may have")
       ->type_name("F")
-      ->check(CLI::Range(0.0, 1.0))
+      ->check(NumberIn(0.0, 1.0))
       ->capture_default_str();
   cmd->add_option("--diff", options->diff_dir,
                   "Write a heat-map PNG per pair into DIR, named like the frame (red to white: failing)")

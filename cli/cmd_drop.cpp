@@ -2,6 +2,7 @@
 // runs it like `recoil run`.
 #include "cli/commands.h"
 #include "cli/drop_scene.h"
+#include "cli/number_range.h"
 #include "cli/run_options.h"
 #include "cli/scene_parser.h"
 #include "cli/utf8_arguments.h"
@@ -33,13 +34,13 @@ void add_drop_command(CLI::App& app, const GlobalOptions& global, Action& action
   cmd->add_option("--material", options->drop.material, "Material preset")
       ->check(CLI::IsMember({"soft", "rubber", "jelly", "stiff", "rigid"}))->capture_default_str();
   cmd->add_option("--height", options->drop.height, "Drop height of the lowest body above the ground, m")
-      ->check(CLI::Range(0.0, 100.0))->capture_default_str();
+      ->check(NumberIn(0.0, 100.0))->capture_default_str();
   cmd->add_option("--friction", options->drop.friction, "Friction coefficient of the ground and the bodies")
-      ->check(CLI::Range(0.0, 10.0))->capture_default_str();
+      ->check(NumberIn(0.0, 10.0))->capture_default_str();
   cmd->add_option("--count", options->drop.count, "Drop this many bodies in a loose pile, the meshes taking turns (seeded: reruns match); 1: each mesh once, side by side")
-      ->check(CLI::Range(1, 1000))->capture_default_str();
+      ->check(NumberIn(1, 1000))->capture_default_str();
   cmd->add_option("--seconds", options->drop.seconds, "Simulated seconds")
-      ->check(CLI::Range(0.0, 3600.0))->capture_default_str();
+      ->check(NumberIn(0.0, 3600.0))->capture_default_str();
   add_up_option(*cmd, options->drop.up);
   add_collision_options(*cmd, options->drop.collision);
   cmd->add_option("--save-scene", options->run.save_scene,

@@ -9,6 +9,7 @@
 
 #include "cli/commands.h"
 #include "cli/drop_scene.h"
+#include "cli/number_range.h"
 #include "cli/scene_info.h"
 #include "core/error.h"
 #include "sim/fem/deformable_body.h"
@@ -176,7 +177,7 @@ void add_info_command(CLI::App& app, const GlobalOptions&, Action& action) {
       cmd->add_option("--resolution", options->resolution,
                       "Lattice cells along the mesh's longest side for the tetrahedra it would get "
                       "(a deformable body's tets.resolution)")
-          ->check(CLI::Range(1, 256))
+          ->check(NumberIn(1, 256))
           ->capture_default_str();
   cmd->footer(
       "Examples:\n"

@@ -1,6 +1,7 @@
 // `recoil turntable MESH`: builds a turntable scene (cli/turntable_scene.cpp)
 // and runs it like `recoil run`.
 #include "cli/commands.h"
+#include "cli/number_range.h"
 #include "cli/render_options.h"
 #include "cli/run_options.h"
 #include "cli/scene_parser.h"
@@ -37,14 +38,14 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
   cmd->add_option("MESH", options->turntable.mesh, "Mesh file (anything assimp reads: OBJ, PLY, STL, glTF, ...)")
       ->required();
   cmd->add_option("--turn-frames", options->turntable.turn_frames, "Frames in one full turn")
-      ->check(CLI::Range(1, 1000000))->capture_default_str();
+      ->check(NumberIn(1, 1000000))->capture_default_str();
   cmd->add_option("--elevation", options->turntable.elevation, "Camera height above the horizon, degrees")
-      ->check(CLI::Range(-89.0, 89.0))->capture_default_str();
+      ->check(NumberIn(-89.0, 89.0))->capture_default_str();
   add_up_option(*cmd, options->turntable.up);
   CLI::Option* settle = cmd->add_flag(
       "--settle", options->settle, "Release the mesh on the ground and let it come to rest before the orbit");
   cmd->add_option("--settle-seconds", options->settle_seconds, "Simulated seconds of settling at most")
-      ->check(CLI::Range(0.001, 3600.0))->capture_default_str()->needs(settle);
+      ->check(NumberIn(0.001, 3600.0))->capture_default_str()->needs(settle);
   cmd->add_option("--material", options->turntable.material, "What a settling mesh is made of (a drop preset)")
       ->check(CLI::IsMember({"soft", "rubber", "jelly", "stiff", "rigid"}))->capture_default_str()->needs(settle);
   add_collision_options(*cmd, options->turntable.collision);

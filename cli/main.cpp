@@ -8,6 +8,7 @@
 #include "cli/build_info.h"
 #include "cli/commands.h"
 #include "cli/interrupt.h"
+#include "cli/number_range.h"
 #include "cli/shell_quote.h"
 #include "cli/usage_error.h"
 #include "cli/work_limits.h"
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
                "Machine-readable lines (JSON) on stderr: progress, the summary, an error (-q does not silence them)");
   app.add_option("--max-memory", global.max_memory_gib,
                  "GiB a run may use: one estimated to need more is refused before it starts (default: 80% of RAM)")
-      ->check(CLI::Range(cli::kLeastMaxMemoryGib, cli::kMostMaxMemoryGib));
+      ->check(cli::NumberIn(cli::kLeastMaxMemoryGib, cli::kMostMaxMemoryGib));
   cli::Action action;
   cli::add_run_command(app, global, action);
   cli::add_drop_command(app, global, action);

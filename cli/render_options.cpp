@@ -1,3 +1,4 @@
+#include "cli/number_range.h"
 #include "cli/render_options.h"
 
 #include <cstdio>
@@ -13,7 +14,7 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
   command.add_option("--resolution", options.resolution, "Frame size WxH in pixels")
       ->group(group)->capture_default_str();
   command.add_option("--fps", options.fps, "Frames per second of the output")
-      ->check(CLI::Range(kFpsRange.lo, kFpsRange.hi))->group(group)->capture_default_str();
+      ->check(NumberIn(kFpsRange.lo, kFpsRange.hi))->group(group)->capture_default_str();
   command.add_option("--msaa", options.msaa, "Anti-aliasing samples per pixel: 0, 2 or 4 (2 only where the OpenGL driver has it; llvmpipe has 4 only)")
       ->check(CLI::IsMember({0, 2, 4}))->group(group)->capture_default_str();
   command.add_flag("--no-shadows", options.no_shadows, "Skip the key light's shadow (faster)")->group(group);
@@ -40,15 +41,15 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
       ->group(group);
   command.add_option("--azimuth", options.azimuth,
                      "Camera direction about the vertical, degrees from +Z towards +X (a turntable's first frame)")
-      ->check(CLI::Range(kAngleRange.lo, kAngleRange.hi))->group(group);
-  command.add_option("--fov", options.fov, "Vertical field of view, degrees")->check(CLI::Range(1.0, 170.0))->group(group);
+      ->check(NumberIn(kAngleRange.lo, kAngleRange.hi))->group(group);
+  command.add_option("--fov", options.fov, "Vertical field of view, degrees")->check(NumberIn(1.0, 170.0))->group(group);
   command.add_option("--camera-position", options.camera_position,
                      "Camera position X,Y,Z in metres (a fixed camera; not with --camera-distance or an orbit)")
       ->group(group);
   command.add_option("--camera-target", options.camera_target, "Point X,Y,Z the camera looks at, metres (default: the scene's centre)")
       ->group(group);
   command.add_option("--png-level", options.png_level, "PNG compression 0 (fastest) to 9 (smallest)")
-      ->check(CLI::Range(0, 9))->group(group)->capture_default_str();
+      ->check(NumberIn(0, 9))->group(group)->capture_default_str();
   command.add_option("--gl", options.gl,
                      "OpenGL backend: osmesa (software), egl (Mesa's surfaceless EGL: llvmpipe, or the GPU of a "
                      "render node) or auto (OSMesa, else EGL); both draw identical frames on llvmpipe")

@@ -188,7 +188,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   const int name_count = scene.frame_count();
   if (!job.video.empty()) {
     require_video(job.video, scene.render.background == "transparent");
-    if (!job.render) throw bad_input("--video needs rendered frames; drop --no-render");
+    if (!job.render) throw bad_input("--video needs rendered frames: leave out --no-render");
   }
 
   RunReport report(job, scene);
@@ -221,6 +221,10 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), size.threads, size.capacity);
   }
 
+  // A --stats path naming a folder is a mistake in the command: found before anything is written.
+  std::error_code ec;
+  if (!job.stats_path.empty() && fs::is_directory(job.stats_path, ec))
+    throw bad_input("--stats " + job.stats_path.string() + " is a folder; it takes the path of a file to write");
   RunResult result;
   // Outputs only once the world, the renderer and the video's file exist: a
   // refused scene or video path writes nothing.

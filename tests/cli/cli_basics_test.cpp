@@ -40,6 +40,20 @@ TEST(Cli, TyposGetADidYouMean) {
   EXPECT_EQ(missing.err, "recoil: error: MESH is required (see recoil drop --help)\n");
 }
 
+// A number out of its range, or a word where a number goes, is refused in
+// the scene file's words, with the range as the user can type it.
+TEST(Cli, NumbersOutOfRangeSayTheRange) {
+  const std::string bunny = shell_quote(source_path("assets/meshes/bunny.obj"));
+  const CommandResult word = run_recoil("turntable " + bunny + " --turn-frames many");
+  EXPECT_EQ(word.exit_code, 2);
+  EXPECT_EQ(word.err,
+            "recoil: error: --turn-frames: must be a number in [1, 1000000], got 'many' (see recoil turntable --help)\n");
+  const CommandResult low = run_recoil("turntable " + bunny + " --fov 0");
+  EXPECT_EQ(low.exit_code, 2);
+  EXPECT_EQ(low.err, "recoil: error: --fov: must be in [1, 170], got 0 (see recoil turntable --help)\n");
+  EXPECT_NE(run_recoil("turntable --help").out.find("--fov FLOAT:in [1, 170]"), std::string::npos);
+}
+
 // `run` given a mesh or a folder says which command to use instead.
 TEST(Cli, RunOnAMeshOrAFolderSaysWhatToRun) {
   const std::string bunny = source_path("assets/meshes/bunny.obj").string();

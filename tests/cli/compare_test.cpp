@@ -104,7 +104,9 @@ TEST(CompareCli, JsonLayoutInDirectoryMode) {
   const nlohmann::ordered_json j = nlohmann::ordered_json::parse(r.out);
   std::vector<std::string> keys;
   for (const auto& item : j.items()) keys.push_back(item.key());
-  EXPECT_EQ(keys, (std::vector<std::string>{"pass", "pairs", "missing", "extra"}));
+  EXPECT_EQ(keys, (std::vector<std::string>{"pass", "pairs", "missing", "extra", "threshold", "max_failing"}));
+  EXPECT_EQ(j["threshold"], 0.02);
+  EXPECT_EQ(j["max_failing"], 0.001);
   EXPECT_EQ(j["pass"], false);
   ASSERT_EQ(j["pairs"].size(), 2u);
   const auto& worst = j["pairs"][0];
@@ -248,6 +250,7 @@ TEST(CompareCli, PairsThatCannotBeComparedAreReportedWithTheRestAndUpdateAccepts
   EXPECT_EQ(render::read_png(dir / "ref" / numbered(3)).width, 16) << "an unreadable frame is never accepted";
   EXPECT_EQ(file_bytes(dir / "ref/new.png"), file_bytes(dir / "actual/new.png"));
   EXPECT_TRUE(fs::exists(dir / "ref/gone.png"));
+  EXPECT_NE(update.err.find("kept 1 with no actual frame (missing)"), std::string::npos) << update.err;
 
   // References made from nothing: a REF that is not there yet is created.
   fs::remove(dir / "actual" / numbered(3));

@@ -232,6 +232,19 @@ TEST(RunCommand, FramesPastTheDurationAreRefused) {
   EXPECT_FALSE(fs::exists(dir / "out"));
 }
 
+// A --stats path that names a folder is a mistake in the command (exit 2),
+// found before anything is written.
+TEST(RunCommand, AStatsPathThatIsAFolderIsRefusedUpFront) {
+  const fs::path dir = scratch_dir("run_stats_folder");
+  fs::create_directories(dir / "stats");
+  const CommandResult r = run_recoil("run " + shell_quote(source_path("assets/scenes/validation/rest.json")) +
+                                     " --no-render --stats " + shell_quote(dir / "stats") + " -o " +
+                                     shell_quote(dir / "out"));
+  EXPECT_EQ(r.exit_code, 2) << r.err;
+  EXPECT_NE(r.err.find("--stats " + (dir / "stats").string() + " is a folder"), std::string::npos) << r.err;
+  EXPECT_FALSE(fs::exists(dir / "out"));
+}
+
 // A rerun into a folder that a longer run wrote leaves one run's frames:
 // those past its frame count (or of another name width) go, the ones within
 // it stay even when not selected, and files that are no frame stay.
@@ -413,13 +426,16 @@ TEST(DropCommand, SeededPileReproducesAndSavesASceneRunAccepts) {
 
 TEST(DropCommand, AMemoryLimitBelowWhatTheProcessHoldsRefusesTheRun) {
   // The bunny's tets and buffers are a few MiB; the process itself (libraries,
-  // the imported mesh) is tens: a 10 MiB limit must count both.
+  // the imported mesh) is tens: a 10 MiB limit must count both, and the
+  // message blames no field of the scene for the process's own share.
   const fs::path dir = scratch_dir("drop_memory_limit");
   const CommandResult r = run_recoil("--max-memory 0.01 drop " + shell_quote(source_path("assets/meshes/bunny.obj")) +
                                      " --no-render --seconds 0.1 -o " + shell_quote(dir / "out"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("in use before it starts), more than the 0.01 GiB allowed (--max-memory)"), std::string::npos)
+  EXPECT_NE(r.err.find("in use before the scene loads, more than the 0.01 GiB allowed (--max-memory): raise the limit"),
+            std::string::npos)
       << r.err;
+  EXPECT_EQ(r.err.find("/bodies/"), std::string::npos) << r.err;
   EXPECT_FALSE(fs::exists(dir / "out" / "run.json"));
 }
 
