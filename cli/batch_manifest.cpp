@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -47,6 +48,9 @@ std::string folder_name(const std::string& stem) {
 std::string option_value(const JsonCursor& field) {
   const nlohmann::json& v = field.value();
   if (v.is_string()) return v.get<std::string>();
+  // 10.0 is the whole number an integer option takes (JSON writers print floats so).
+  if (v.is_number_float() && std::abs(v.get<double>()) < 1e15 && std::floor(v.get<double>()) == v.get<double>())
+    return std::to_string(static_cast<long long>(v.get<double>()));
   if (v.is_number()) return v.dump();
   field.fail("expected a string or a number, got " + std::string(v.type_name()));
 }

@@ -137,9 +137,9 @@ void add_batch_command(CLI::App& app, const GlobalOptions& global, Action& actio
   cmd->add_option("-o,--output", options->output, "Output folder: one sub-folder per item (default: output/<source name>/)");
   cmd->add_option("--shard", options->shard, "Run only shard I of N (0-based): the items whose index mod N is I");
   cmd->add_option("--shard-count", options->shard_count, "Shards in all, with the index from JOB_COMPLETION_INDEX")
-      ->check(NumberIn(1, 1000000));
+      ->check(WholeNumberIn(1, 1000000));
   CLI::Option* jobs = cmd->add_option("--jobs", options->jobs, "Items run at once (the cores are shared out among them)")
-                          ->check(NumberIn(1, 256))
+                          ->check(WholeNumberIn(1, 256))
                           ->capture_default_str();
   cmd->add_option("--set", options->settings, "KEY=VALUE given to every item that does not set KEY (repeatable)");
   CLI::Option* sheet =

@@ -64,7 +64,8 @@ nlohmann::ordered_json to_json(const std::vector<PairResult>& results, const Pai
   nlohmann::ordered_json pairs = nlohmann::ordered_json::array();
   for (const PairResult& r : results) {
     const render::ImageComparison& m = r.metrics;
-    nlohmann::ordered_json pair = {{"actual", r.actual.string()}, {"reference", r.reference.string()}, {"pass", r.pass}};
+    nlohmann::ordered_json pair = {
+        {"actual", r.actual.string()}, {"reference", r.reference.string()}, {"pass", r.pass}};
     if (!r.error.empty()) {
       pair["error"] = r.error;
       for (const char* metric : {"failing_fraction", "max_difference", "psnr", "ssim"}) pair[metric] = nullptr;
@@ -109,19 +110,26 @@ void check_diff_dir(const CompareOptions& options, const PairPlan& plan) {
 }
 
 // --update: the actual frame replaces the reference of every failing pair
-// (one of another size too, once the actual frame reads as a PNG), and
-// extra frames are added to REF (created if need be); a reference with no
-// actual frame (missing) is kept.
-void update_references(const std::vector<PairResult>& results, const PairPlan& plan, const GlobalOptions& global) {
+// (one of another size too), and extra frames are added to REF (created if
+// need be), each only when it reads as a PNG; a reference with no actual
+// frame (missing) is kept. Returns why an extra frame was not added.
+std::vector<std::string> update_references(const std::vector<PairResult>& results, const PairPlan& plan,
+                                           const GlobalOptions& global) {
   size_t updated = 0, added = 0;
   for (const PairResult& r : results)
     if (!r.pass && r.actual_readable) {
       copy_file_atomically(r.actual, r.reference);
       ++updated;
     }
-  if (!plan.extra.empty() && plan.directory_mode) ensure_output_dir(plan.reference_root);
+  std::vector<std::string> refused;
   for (const fs::path& frame : plan.extra) {
-    copy_file_atomically(frame, plan.directory_mode ? plan.reference_root / frame.filename() : plan.reference_root);
+    if (!readable_png(frame)) {
+      refused.push_back("--update: " + frame.string() + " does not read as a PNG; not added to the references");
+      continue;
+    }
+    const fs::path reference = plan.directory_mode ? plan.reference_root / frame.filename() : plan.reference_root;
+    if (reference.has_parent_path()) ensure_output_dir(reference.parent_path());
+    copy_file_atomically(frame, reference);
     ++added;
   }
   if (!global.quiet) {
@@ -131,6 +139,7 @@ void update_references(const std::vector<PairResult>& results, const PairPlan& p
                 << " with no actual frame (missing), which fail every comparison until removed from REF";
     std::cerr << "\n";
   }
+  return refused;
 }
 
 int run_compare(const CompareOptions& options, const GlobalOptions& global) {
@@ -159,7 +168,8 @@ int run_compare(const CompareOptions& options, const GlobalOptions& global) {
 
   if (options.json) {
     // Paths are bytes; a name that is not UTF-8 is shown with U+FFFD rather than aborting.
-    std::cout << to_json(results, plan, pass, options).dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace)
+    std::cout << to_json(results, plan, pass, options)
+                     .dump(2, ' ', false, nlohmann::ordered_json::error_handler_t::replace)
               << std::endl;
   } else if (!global.quiet) {
     print_table(results, plan, options, pass);
@@ -171,14 +181,19 @@ int run_compare(const CompareOptions& options, const GlobalOptions& global) {
     write_html_report(options.report, results, plan, report);
     if (!global.quiet) std::cerr << "recoil: wrote report " << options.report << "\n";
   }
-  if (options.update) update_references(results, plan, global);
-  // A pair that could not be compared is an error (exit 2), raised once every pair is reported.
+  // A pair that could not be compared, or a frame --update could not take,
+  // is an error (exit 2), raised once every pair is reported.
   std::vector<std::string> errors;
   for (const PairResult& r : results)
     if (!r.error.empty()) errors.push_back(r.error);
+  if (options.update)
+    for (std::string& refused : update_references(results, plan, global)) errors.push_back(std::move(refused));
   if (errors.size() == 1) throw bad_input(errors.front());
-  if (errors.size() > 1)
-    throw bad_input(std::to_string(errors.size()) + " pairs could not be compared; the first: " + errors.front());
+  if (errors.size() > 1) {
+    std::string message = std::to_string(errors.size()) + " frames could not be compared or taken: ";
+    for (size_t i = 0; i < std::min<size_t>(errors.size(), 3); ++i) message += (i > 0 ? "; " : "") + errors[i];
+    throw bad_input(message + (errors.size() > 3 ? "; and " + std::to_string(errors.size() - 3) + " more" : ""));
+  }
   return pass ? 0 : 1;
 }
 

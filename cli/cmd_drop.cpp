@@ -38,7 +38,7 @@ void add_drop_command(CLI::App& app, const GlobalOptions& global, Action& action
   cmd->add_option("--friction", options->drop.friction, "Friction coefficient of the ground and the bodies")
       ->check(NumberIn(0.0, 10.0))->capture_default_str();
   cmd->add_option("--count", options->drop.count, "Drop this many bodies in a loose pile, the meshes taking turns (seeded: reruns match); 1: each mesh once, side by side")
-      ->check(NumberIn(1, 1000))->capture_default_str();
+      ->check(WholeNumberIn(1, 1000))->capture_default_str();
   cmd->add_option("--seconds", options->drop.seconds, "Simulated seconds")
       ->check(NumberIn(0.0, 3600.0))->capture_default_str();
   add_up_option(*cmd, options->drop.up);

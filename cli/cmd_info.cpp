@@ -177,7 +177,7 @@ void add_info_command(CLI::App& app, const GlobalOptions&, Action& action) {
       cmd->add_option("--resolution", options->resolution,
                       "Lattice cells along the mesh's longest side for the tetrahedra it would get "
                       "(a deformable body's tets.resolution)")
-          ->check(NumberIn(1, 256))
+          ->check(WholeNumberIn(1, 256))
           ->capture_default_str();
   cmd->footer(
       "Examples:\n"

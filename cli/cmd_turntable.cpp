@@ -38,7 +38,7 @@ void add_turntable_command(CLI::App& app, const GlobalOptions& global, Action& a
   cmd->add_option("MESH", options->turntable.mesh, "Mesh file (anything assimp reads: OBJ, PLY, STL, glTF, ...)")
       ->required();
   cmd->add_option("--turn-frames", options->turntable.turn_frames, "Frames in one full turn")
-      ->check(NumberIn(1, 1000000))->capture_default_str();
+      ->check(WholeNumberIn(1, 1000000))->capture_default_str();
   cmd->add_option("--elevation", options->turntable.elevation, "Camera height above the horizon, degrees")
       ->check(NumberIn(-89.0, 89.0))->capture_default_str();
   add_up_option(*cmd, options->turntable.up);

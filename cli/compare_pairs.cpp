@@ -43,6 +43,8 @@ std::map<std::string, fs::path> png_files(const fs::path& dir) {
   return files;
 }
 
+}  // namespace
+
 bool readable_png(const fs::path& path) {
   try {
     render::read_png(path);
@@ -51,8 +53,6 @@ bool readable_png(const fs::path& path) {
     return false;
   }
 }
-
-}  // namespace
 
 PairPlan plan_pairs(const fs::path& actual, const fs::path& reference, bool creating_references) {
   const PathKind actual_kind = kind_of(actual);
@@ -89,6 +89,8 @@ PairPlan plan_pairs(const fs::path& actual, const fs::path& reference, bool crea
       reference_exists ? png_files(reference) : std::map<std::string, fs::path>{};
   if (reference_files.empty() && !creating_references)
     throw bad_input("reference directory " + reference.string() + " holds no *.png files (--update creates them)");
+  if (reference_files.empty() && actual_files.empty())
+    throw bad_input("ACTUAL " + actual.string() + " holds no *.png files: no references to make of it");
   for (const auto& [name, path] : reference_files) {
     const auto match = actual_files.find(name);
     if (match == actual_files.end()) {

@@ -63,6 +63,9 @@ struct CompareSettings {
 // by pair index.
 std::vector<PairResult> compare_pairs(const PairPlan& plan, const CompareSettings& settings);
 
+// Whether the file at `path` decodes as a PNG.
+bool readable_png(const std::filesystem::path& path);
+
 // Worst first: failing pairs before passing ones, those that could not be
 // compared first among them, then larger failing fraction, then larger max
 // difference, then lower SSIM, then by path (so ties keep a fixed order).

@@ -1,11 +1,14 @@
 #include "cli/drop_scene.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <random>
 
 #include "cli/json_cursor.h"
+#include "cli/number_range.h"
 #include "cli/scene_limits.h"
 #include "core/error.h"
 #include "sim/fem/deformable_body.h"
@@ -72,11 +75,14 @@ void add_collision_options(CLI::App& command, CollisionChoice& choice) {
   // The scene's {"triangles": N} takes 4 or more: a closed surface has at least a tetrahedron's faces.
   const CLI::Validator budget(
       [](std::string& text) -> std::string {
-        const long long n = std::stoll(text);
-        return n == 0 || (n >= kMinCollisionTriangles && n <= kMaxCollisionTriangles)
+        char* end = nullptr;
+        errno = 0;
+        const long long n = std::strtoll(text.c_str(), &end, 10);
+        const bool whole = !text.empty() && end == text.c_str() + text.size() && errno != ERANGE;
+        return whole && (n == 0 || (n >= kMinCollisionTriangles && n <= kMaxCollisionTriangles))
                    ? std::string()
                    : "must be 0 (the mesh itself) or " + std::to_string(kMinCollisionTriangles) + " to " +
-                         std::to_string(kMaxCollisionTriangles) + " triangles, not " + text;
+                         std::to_string(kMaxCollisionTriangles) + " triangles, not '" + text + "'";
       },
       "0 or " + std::to_string(kMinCollisionTriangles) + "-" + std::to_string(kMaxCollisionTriangles));
   CLI::Option* triangles =
@@ -87,7 +93,7 @@ void add_collision_options(CLI::App& command, CollisionChoice& choice) {
   command
       .add_option("--collision-edge", choice.edge,
                   "Collision surface tiled at this edge length, m (default: a quarter lattice cell, >= 2 margins)")
-      ->check(CLI::PositiveNumber)
+      ->check(NumberAbove(0.0))
       ->excludes(triangles);
 }
 

@@ -21,7 +21,10 @@ namespace {
 // reader can parse like the rest.
 void report_end(const recoil::cli::GlobalOptions& global, const char* event, const std::string& message, int code) {
   if (global.log_json) {
-    std::cerr << nlohmann::json{{"event", event}, {"message", message}, {"exit_code", code}}.dump() << std::endl;
+    // A path in the message may hold bytes that are not UTF-8 (info and compare read such files).
+    std::cerr << nlohmann::json{{"event", event}, {"message", message}, {"exit_code", code}}.dump(
+                     -1, ' ', false, nlohmann::json::error_handler_t::replace)
+              << std::endl;
   } else {
     std::cerr << "recoil: " << (std::string(event) == "error" ? "error: " : "") << message << std::endl;
   }

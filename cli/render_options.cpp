@@ -49,7 +49,7 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
   command.add_option("--camera-target", options.camera_target, "Point X,Y,Z the camera looks at, metres (default: the scene's centre)")
       ->group(group);
   command.add_option("--png-level", options.png_level, "PNG compression 0 (fastest) to 9 (smallest)")
-      ->check(NumberIn(0, 9))->group(group)->capture_default_str();
+      ->check(WholeNumberIn(0, 9))->group(group)->capture_default_str();
   command.add_option("--gl", options.gl,
                      "OpenGL backend: osmesa (software), egl (Mesa's surfaceless EGL: llvmpipe, or the GPU of a "
                      "render node) or auto (OSMesa, else EGL); both draw identical frames on llvmpipe")

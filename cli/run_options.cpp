@@ -99,7 +99,7 @@ void add_run_options(CLI::App& command, RunOptions& options) {
   command.add_flag("--strict", options.strict,
                    "Fail (exit 3) when a contact solve did not converge; the frames and run.json are still written");
   command.add_option("--threads", options.threads, "Threads for collision queries (default: all cores)")
-      ->check(NumberIn(1, 1024));
+      ->check(WholeNumberIn(1, 1024));
   add_render_options(command, options.render);
 }
 

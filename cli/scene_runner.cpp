@@ -160,6 +160,18 @@ double video_fps(const std::vector<int>& selected, double fps) {
 // frames beside it, differs from `resolved`: a JSON pointer ("/bodies/0/material"),
 // or "" when they are the same scene. A folder without one holds no run's
 // frames (a run writes it before its first frame), and is "" too.
+// Whether the run.json in `dir` says a render run finished there: only then
+// does the scene.json beside it describe the frames (a run without frames,
+// or a stopped one, writes its scene.json over the one that drew them).
+bool frames_are_the_saved_scenes(const fs::path& dir) {
+  std::error_code ec;
+  if (!fs::exists(dir / "run.json", ec)) return false;
+  const std::vector<std::uint8_t> bytes = read_file_bytes(dir / "run.json");
+  const nlohmann::json run = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
+  if (!run.is_object() || !run.contains("exit") || !run["exit"].is_object()) return false;
+  return run.value("render", false) && run["exit"].value("code", -1) == 0;
+}
+
 std::string difference_from_saved_scene(const fs::path& saved, const nlohmann::json& resolved) {
   std::error_code ec;
   if (!fs::exists(saved, ec)) return "";
@@ -190,6 +202,12 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     require_video(job.video, scene.render.background == "transparent");
     if (!job.render) throw bad_input("--video needs rendered frames: leave out --no-render");
   }
+  // A statistics path naming a folder is a mistake in the command: found before anything is built or written.
+  const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
+  std::error_code ec;
+  if (fs::is_directory(stats_path, ec))
+    throw bad_input((job.stats_path.empty() ? "" : "--stats ") + stats_path.string() +
+                    " is a folder; the statistics need the path of a file to write");
 
   RunReport report(job, scene);
   Progress progress(global, job.label, static_cast<int>(selected.size()));
@@ -221,10 +239,6 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     writer = std::make_unique<render::FrameWriter>(to_png_options(scene.render), size.threads, size.capacity);
   }
 
-  // A --stats path naming a folder is a mistake in the command: found before anything is written.
-  std::error_code ec;
-  if (!job.stats_path.empty() && fs::is_directory(job.stats_path, ec))
-    throw bad_input("--stats " + job.stats_path.string() + " is a folder; it takes the path of a file to write");
   RunResult result;
   // Outputs only once the world, the renderer and the video's file exist: a
   // refused scene or video path writes nothing.
@@ -234,12 +248,13 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   ensure_output_dir(job.output_dir);
   remove_stale_temporaries(job.output_dir);
   const nlohmann::json resolved = resolved_scene(scene);
-  // Frames on disk are kept (--resume), or left beside this run's, only when
-  // the run that drew them had this scene.
+  // Frames on disk are kept (--resume) only when the run that drew them had
+  // this scene, and those this run does not draw are removed when a
+  // finished render run of another scene drew them.
   const std::string another_scene = difference_from_saved_scene(job.output_dir / "scene.json", resolved);
   if (job.resume) result.resume_mismatch = another_scene;
+  const bool frames_of_another_scene = !another_scene.empty() && frames_are_the_saved_scenes(job.output_dir);
   write_text_atomically(job.output_dir / "scene.json", resolved.dump(2) + "\n");
-  const fs::path stats_path = job.stats_path.empty() ? job.output_dir / "stats.jsonl" : job.stats_path;
   if (stats_path.has_parent_path()) ensure_output_dir(stats_path.parent_path());
   errno = 0;
   std::ofstream stats_out(stats_path, std::ios::binary | std::ios::trunc);
@@ -368,11 +383,12 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
                      " of " + std::to_string(selected.size()) + " frames; run the same command with --resume to finish";
   if (video && !result.failed && !result.interrupted_by) video->finish();
   // A finished run leaves the folder one scene's frames: a longer earlier
-  // run's tail goes, and all that another scene's run drew. A run without
-  // frames leaves them (its scene may differ only in how frames are drawn).
+  // run's tail goes, and all that another scene's finished render run drew.
+  // A run without frames leaves them (its scene may differ only in how
+  // frames are drawn).
   if (job.render && !result.failed && !result.interrupted_by)
     result.removed_frames =
-        remove_foreign_frames(job.output_dir, name_count, another_scene.empty() ? nullptr : &selected);
+        remove_foreign_frames(job.output_dir, name_count, frames_of_another_scene ? &selected : nullptr);
   report.timings.encode = writer ? writer->encode_ms() : 0.0;
   result.steps = world->counters().steps;
   result.quality = report.solve_quality(scene.world.contact.margin);

@@ -1,5 +1,7 @@
 #include "cli/utf8_arguments.h"
 
+#include <filesystem>
+
 #include "core/error.h"
 #include "core/utf8.h"
 
@@ -15,6 +17,10 @@ void require_utf8(const std::string& text, const std::string& what) {
 
 void require_utf8_arguments(const GlobalOptions& global) {
   for (const std::string& argument : global.arguments) require_utf8(argument, "argument");
+  // Relative paths are recorded made absolute, through the working directory.
+  std::error_code ec;
+  const std::filesystem::path here = std::filesystem::current_path(ec);
+  if (!ec) require_utf8(here.string(), "the working directory");
 }
 
 }  // namespace recoil::cli

@@ -14,7 +14,8 @@ namespace recoil::cli {
 // is not UTF-8 text, when it is not.
 void require_utf8(const std::string& text, const std::string& what);
 
-// require_utf8 on every word of the command line.
+// require_utf8 on every word of the command line and on the working
+// directory (relative paths are recorded made absolute).
 void require_utf8_arguments(const GlobalOptions& global);
 
 }  // namespace recoil::cli

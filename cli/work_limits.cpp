@@ -113,10 +113,10 @@ void check_work_limits(const SceneDesc& scene, int last_frame, bool render, doub
                     format_number("%g", scene.render.fps) + " fps (or --frames) is " + format_number("%.3g", frames) +
                     " frames; at most " + std::to_string(kMaxFrames));
   const MemoryEstimate memory = estimate_memory(scene, render);
-  // A limit below what recoil uses before the scene loads is no field's fault.
-  if (memory.bytes > memory_limit && memory.in_use >= memory.largest_bytes)
-    throw bad_input(file + ": the run needs about " + gib(memory.bytes) + ", " + gib(memory.in_use) +
-                    " of it in use before the scene loads, more than the " + gib(memory_limit) +
+  // A limit below what recoil already holds (itself, the meshes read) is no field's fault.
+  if (memory.in_use >= memory_limit)
+    throw bad_input(file + ": recoil already holds " + gib(memory.in_use) +
+                    " (itself and the meshes read), more than the " + gib(memory_limit) +
                     " allowed (--max-memory): raise the limit");
   if (memory.bytes > memory_limit)
     throw bad_input(file + ": " + memory.largest_field + ": the run needs about " + gib(memory.bytes) + " (" +

@@ -212,7 +212,7 @@ void World::collide_and_solve(StepReport& report) {
   problem.b = m_b;
   problem.softness = m_contact.softness;
   // Rows linearised at the contact-free prediction (the solver itself starts
-  // from dv = 0: see cr_solver.cpp).
+  // from dv = 0 on the bodies they touch: contact_solve_start).
   model.build(candidates, m_dv, m_memory, problem);
   report.contacts = model.num_contacts();
   if (free_solution_is_feasible(problem, m_dv)) {

@@ -4,6 +4,7 @@
 
 #include "core/byte_stream.h"
 #include "core/check.h"
+#include "core/utf8.h"
 
 namespace recoil::sim {
 
@@ -95,11 +96,9 @@ std::string printable(const std::string& text, size_t limit) {
   for (size_t i = 0; i < text.size();) {
     if (out.size() >= limit) return out + "...";
     const auto byte = static_cast<unsigned char>(text[i]);
-    // A whole UTF-8 sequence is kept; a control character or a stray byte is not.
-    const size_t length = byte < 0x80 ? 1 : (byte >> 5) == 0x6 ? 2 : (byte >> 4) == 0xe ? 3 : (byte >> 3) == 0x1e ? 4 : 0;
-    bool whole = length > 0 && i + length <= text.size();
-    for (size_t k = 1; whole && k < length; ++k) whole = (static_cast<unsigned char>(text[i + k]) >> 6) == 0x2;
-    if (!whole || byte < 0x20 || byte == 0x7f) {
+    // A well-formed UTF-8 sequence is kept; a control character or a malformed byte is not.
+    const size_t length = utf8_sequence_length(std::string_view(text).substr(i));
+    if (length == 0 || byte < 0x20 || byte == 0x7f) {
       out.push_back('?');
       ++i;
       continue;

@@ -435,7 +435,7 @@ TEST(BatchCommand, ManifestErrorsNameTheItemAndTheFieldBeforeAnythingRuns) {
   EXPECT_NE(e.find("/0/resolution: --resolution takes one value, written as on the command line"), std::string::npos)
       << e;
   e = error_for(json::array({{{"mesh", cube}, {"turn-frames", "many"}}}));
-  EXPECT_NE(e.find("/0/turn-frames: must be a number in [1, 1000000], got 'many'"), std::string::npos) << e;
+  EXPECT_NE(e.find("/0/turn-frames: must be a whole number in [1, 1000000], got 'many'"), std::string::npos) << e;
   // An option only some commands take, given to all by --set, is blamed on --set.
   write_text(dir / "m.json", json::array({ok}).dump());
   const CommandResult set = run_recoil("batch " + shell_quote(dir / "m.json") + " --set seconds=0.3 --list");

@@ -47,11 +47,20 @@ TEST(Cli, NumbersOutOfRangeSayTheRange) {
   const CommandResult word = run_recoil("turntable " + bunny + " --turn-frames many");
   EXPECT_EQ(word.exit_code, 2);
   EXPECT_EQ(word.err,
-            "recoil: error: --turn-frames: must be a number in [1, 1000000], got 'many' (see recoil turntable --help)\n");
+            "recoil: error: --turn-frames: must be a whole number in [1, 1000000], got 'many' (see recoil turntable "
+            "--help)\n");
   const CommandResult low = run_recoil("turntable " + bunny + " --fov 0");
   EXPECT_EQ(low.exit_code, 2);
   EXPECT_EQ(low.err, "recoil: error: --fov: must be in [1, 170], got 0 (see recoil turntable --help)\n");
   EXPECT_NE(run_recoil("turntable --help").out.find("--fov FLOAT:in [1, 170]"), std::string::npos);
+  const CommandResult part = run_recoil("turntable " + bunny + " --turn-frames 1.5");
+  EXPECT_EQ(part.exit_code, 2);
+  EXPECT_NE(part.err.find("--turn-frames: must be a whole number in [1, 1000000], got '1.5'"), std::string::npos)
+      << part.err;
+  const CommandResult budget = run_recoil("drop " + bunny + " --collision-triangles many");
+  EXPECT_EQ(budget.exit_code, 2) << budget.err;
+  EXPECT_NE(budget.err.find("--collision-triangles: must be 0 (the mesh itself) or 4 to"), std::string::npos)
+      << budget.err;
 }
 
 // `run` given a mesh or a folder says which command to use instead.

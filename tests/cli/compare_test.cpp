@@ -229,7 +229,7 @@ TEST(CompareCli, PairsThatCannotBeComparedAreReportedWithTheRestAndUpdateAccepts
   EXPECT_NE(table.out.find("pass       0.0000%"), std::string::npos) << table.out;
   EXPECT_EQ(count(table.out, "ERROR"), 2u) << table.out;
   EXPECT_NE(table.out.find("image size mismatch: actual is 20x16, reference is 16x16"), std::string::npos) << table.out;
-  EXPECT_NE(table.err.find("recoil: error: 2 pairs could not be compared"), std::string::npos) << table.err;
+  EXPECT_NE(table.err.find("recoil: error: 2 frames could not be compared or taken"), std::string::npos) << table.err;
   const CommandResult json = run_recoil(args + " --json");
   EXPECT_EQ(json.exit_code, 2);
   const nlohmann::json j = nlohmann::json::parse(json.out);
@@ -260,9 +260,25 @@ TEST(CompareCli, PairsThatCannotBeComparedAreReportedWithTheRestAndUpdateAccepts
   for (const char* name : {"f1.png", "f2.png", "new.png"})
     EXPECT_EQ(file_bytes(dir / "fresh/golden" / name), file_bytes(dir / "actual" / name)) << name;
   const CommandResult one = run_recoil("compare " + shell_quote(dir / "actual/new.png") + " " +
-                                       shell_quote(dir / "fresh/one.png") + " --update");
+                                       shell_quote(dir / "single/deeper/one.png") + " --update");
   EXPECT_EQ(one.exit_code, 0) << one.err;
-  EXPECT_EQ(file_bytes(dir / "fresh/one.png"), file_bytes(dir / "actual/new.png"));
+  EXPECT_EQ(file_bytes(dir / "single/deeper/one.png"), file_bytes(dir / "actual/new.png"));
+  // An extra frame that is no PNG is never taken as a reference; an
+  // unreadable reference is reported, and replaced by a readable frame.
+  std::ofstream(dir / "actual/junk.png") << "junk";
+  std::ofstream(dir / "fresh/golden/f1.png") << "broken reference";
+  const CommandResult junk = run_recoil("compare " + shell_quote(dir / "actual") + " " +
+                                        shell_quote(dir / "fresh/golden") + " --update");
+  EXPECT_EQ(junk.exit_code, 2) << junk.err;
+  EXPECT_NE(junk.err.find("junk.png does not read as a PNG; not added"), std::string::npos) << junk.err;
+  EXPECT_NE(junk.out.find("ERROR"), std::string::npos) << junk.out;
+  EXPECT_FALSE(fs::exists(dir / "fresh/golden/junk.png"));
+  EXPECT_EQ(file_bytes(dir / "fresh/golden/f1.png"), file_bytes(dir / "actual/f1.png"));
+  fs::create_directories(dir / "nothing");
+  EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "nothing") + " " + shell_quote(dir / "nowhere") + " --update")
+                .exit_code,
+            2)
+      << "no references to make of an empty folder";
   EXPECT_EQ(run_recoil("compare " + shell_quote(dir / "actual") + " " + shell_quote(dir / "nowhere")).exit_code, 2)
       << "without --update a missing REF is a wrong path";
 }

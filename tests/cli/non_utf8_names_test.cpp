@@ -2,6 +2,7 @@
 
 #include <Eigen/Core>
 #include <filesystem>
+#include <nlohmann/json.hpp>
 #include <string>
 
 #include "core/utf8.h"
@@ -56,6 +57,18 @@ TEST(NonUtf8Names, AreRefusedBeforeAnythingIsWrittenByTheCommandsThatRecordThem)
   EXPECT_FALSE(fs::exists(dir / "batch"));
   const CommandResult info = run_recoil("info " + shell_quote(latin1));
   EXPECT_EQ(info.exit_code, 0) << info.err;
+  // Relative paths are recorded made absolute: a working directory that is
+  // not UTF-8 is refused as an argument is.
+  fs::create_directories(dir / "caf\xE9");
+  const CommandResult here = run_recoil("turntable " + shell_quote(meshes / "plain.off") + quick + "out",
+                                        "-C " + shell_quote(dir / "caf\xE9"));
+  EXPECT_EQ(here.exit_code, 2) << here.err;
+  EXPECT_NE(here.err.find("the working directory '"), std::string::npos) << here.err;
+  EXPECT_FALSE(fs::exists(dir / "caf\xE9" / "out"));
+  // An error about such a name is still one JSON line under --log-json.
+  const CommandResult logged = run_recoil("--log-json info " + shell_quote(meshes / "gone\xE9.off"));
+  EXPECT_EQ(logged.exit_code, 2) << logged.err;
+  EXPECT_EQ(nlohmann::json::parse(logged.err)["event"], "error") << logged.err;
 }
 
 }  // namespace recoil::test

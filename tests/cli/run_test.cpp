@@ -290,6 +290,12 @@ TEST(RunCommand, ARunOfAnotherSceneLeavesNoneOfTheOldScenesFrames) {
   ASSERT_EQ(none.exit_code, 0) << none.err;
   EXPECT_EQ(none.err.find("removed"), std::string::npos) << none.err;
   EXPECT_TRUE(fs::exists(dir / "frame_0001.png"));
+  // That run wrote its scene.json over the one that drew the frames: what
+  // drew them is unknown now, and a render run of their own scene keeps them.
+  const CommandResult again = run_recoil("run " + scene + " --frames 1 --resolution 48x32" + out);
+  ASSERT_EQ(again.exit_code, 0) << again.err;
+  EXPECT_EQ(again.err.find("removed"), std::string::npos) << again.err;
+  EXPECT_TRUE(fs::exists(dir / "frame_0002.png"));
 }
 
 // The shipped rollers example to its end: the soft ball is drawn through
@@ -432,7 +438,7 @@ TEST(DropCommand, AMemoryLimitBelowWhatTheProcessHoldsRefusesTheRun) {
   const CommandResult r = run_recoil("--max-memory 0.01 drop " + shell_quote(source_path("assets/meshes/bunny.obj")) +
                                      " --no-render --seconds 0.1 -o " + shell_quote(dir / "out"));
   EXPECT_EQ(r.exit_code, 2);
-  EXPECT_NE(r.err.find("in use before the scene loads, more than the 0.01 GiB allowed (--max-memory): raise the limit"),
+  EXPECT_NE(r.err.find("(itself and the meshes read), more than the 0.01 GiB allowed (--max-memory): raise the limit"),
             std::string::npos)
       << r.err;
   EXPECT_EQ(r.err.find("/bodies/"), std::string::npos) << r.err;

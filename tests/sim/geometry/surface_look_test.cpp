@@ -200,6 +200,8 @@ TEST(SurfaceLook, TextFromFilesIsPrintable) {
   EXPECT_EQ(printable("wood\x1b[31m\n"), "wood?[31m?");
   EXPECT_EQ(printable("caf\xc3\xa9"), "caf\xc3\xa9");  // UTF-8 kept
   EXPECT_EQ(printable("a\xe9" "b"), "a?b");            // a Latin-1 byte is not UTF-8
+  EXPECT_EQ(printable("t\xc0\xaf.png"), "t??.png");      // an overlong '/' is no character either
+  EXPECT_EQ(printable("\xed\xa0\x80"), "???");           // nor is a surrogate
   EXPECT_EQ(printable(std::string(500, 'x'), 10), std::string(10, 'x') + "...");
 }
 
