@@ -90,15 +90,20 @@ nlohmann::ordered_json to_json(const std::vector<PairResult>& results, const Pai
           {"max_failing", options.max_failing}};
 }
 
+// Creates the folder an option writes into, its errors naming the option.
+void ensure_option_folder(const fs::path& folder, const std::string& option) {
+  try {
+    ensure_output_dir(folder);
+  } catch (const Error& e) {
+    throw Error(e.kind(), option + ": " + std::string(e.what()));
+  }
+}
+
 // --diff must not be a folder of the inputs: heat maps are named like the
 // frames and would overwrite them.
 void check_diff_dir(const CompareOptions& options, const PairPlan& plan) {
   if (options.diff_dir.empty()) return;
-  try {
-    ensure_output_dir(options.diff_dir);
-  } catch (const Error& e) {
-    throw Error(e.kind(), "--diff: " + std::string(e.what()));
-  }
+  ensure_option_folder(options.diff_dir, "--diff");
   std::error_code ec;
   for (const auto* list : {&plan.actual, &plan.reference})
     for (const fs::path& p : *list) {
@@ -147,13 +152,8 @@ int run_compare(const CompareOptions& options, const GlobalOptions& global) {
   check_diff_dir(options, plan);
   // The report's folder is made before the comparison, as --diff's is: a path
   // that cannot be written fails at once, not after every pair is compared.
-  if (const fs::path folder = fs::path(options.report).parent_path(); !options.report.empty() && !folder.empty()) {
-    try {
-      ensure_output_dir(folder);
-    } catch (const Error& e) {
-      throw Error(e.kind(), "--report: " + std::string(e.what()));
-    }
-  }
+  if (const fs::path folder = fs::path(options.report).parent_path(); !options.report.empty() && !folder.empty())
+    ensure_option_folder(folder, "--report");
   CompareSettings settings;
   settings.threshold = options.threshold;
   settings.max_failing = options.max_failing;
