@@ -156,22 +156,28 @@ double video_fps(const std::vector<int>& selected, double fps) {
   return fps / stride;
 }
 
-// Where the scene DIR/scene.json describes, written by the run that drew the
-// frames beside it, differs from `resolved`: a JSON pointer ("/bodies/0/material"),
-// or "" when they are the same scene. A folder without one holds no run's
-// frames (a run writes it before its first frame), and is "" too.
 // Whether the run.json in `dir` says a render run finished there: only then
 // does the scene.json beside it describe the frames (a run without frames,
 // or a stopped one, writes its scene.json over the one that drew them).
 bool frames_are_the_saved_scenes(const fs::path& dir) {
   std::error_code ec;
-  if (!fs::exists(dir / "run.json", ec)) return false;
-  const std::vector<std::uint8_t> bytes = read_file_bytes(dir / "run.json");
+  if (!fs::is_regular_file(dir / "run.json", ec)) return false;
+  std::vector<std::uint8_t> bytes;
+  try {
+    bytes = read_file_bytes(dir / "run.json");
+  } catch (const Error&) {
+    return false;  // unreadable: nothing is known of the frames
+  }
   const nlohmann::json run = nlohmann::json::parse(bytes.begin(), bytes.end(), nullptr, false);
   if (!run.is_object() || !run.contains("exit") || !run["exit"].is_object()) return false;
   return run.value("render", false) && run["exit"].value("code", -1) == 0;
 }
 
+// Where the scene DIR/scene.json describes, written by the last run there
+// (frames_are_the_saved_scenes says whether it drew the frames), differs
+// from `resolved`: a JSON pointer ("/bodies/0/material"),
+// or "" when they are the same scene. A folder without one holds no run's
+// frames (a run writes it before its first frame), and is "" too.
 std::string difference_from_saved_scene(const fs::path& saved, const nlohmann::json& resolved) {
   std::error_code ec;
   if (!fs::exists(saved, ec)) return "";
