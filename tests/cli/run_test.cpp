@@ -455,11 +455,14 @@ TEST(TurntableCommand, AMemoryLimitCountsWhatAMeshsTrianglesNeed) {
   const std::string args = "turntable " + shell_quote(stl) + " --turn-frames 2 --resolution 64x48 -o ";
   const CommandResult refused = run_recoil("--max-memory 0.15 " + args + shell_quote(dir / "refused"));
   ASSERT_EQ(refused.exit_code, 2) << refused.err;
-  EXPECT_NE(refused.err.find("/bodies/1/mesh: the run needs about "), std::string::npos) << refused.err;
-  EXPECT_NE(refused.err.find("million triangles"), std::string::npos) << refused.err;
   const CommandResult ran = run_recoil("--max-memory 2 " + args + shell_quote(dir / "ran"));
   ASSERT_EQ(ran.exit_code, 0) << ran.err;
-#ifndef __SANITIZE_ADDRESS__  // AddressSanitizer's shadow memory and redzones are no part of the estimate
+  // AddressSanitizer's shadow memory and redzones are no part of the
+  // estimate; under it recoil's own share alone passes 0.15 GiB, and the
+  // refusal blames no field.
+#ifndef __SANITIZE_ADDRESS__
+  EXPECT_NE(refused.err.find("/bodies/1/mesh: the run needs about "), std::string::npos) << refused.err;
+  EXPECT_NE(refused.err.find("million triangles"), std::string::npos) << refused.err;
   const double estimate_gib = std::stod(refused.err.substr(refused.err.find("needs about ") + 12));
   const double peak_mib = json::parse(file_bytes(dir / "ran/run.json"))["peak_memory_mib"];
   EXPECT_GE(estimate_gib * 1024.0, 0.9 * peak_mib) << "estimated " << estimate_gib << " GiB";
