@@ -116,13 +116,14 @@ void check_diff_dir(const CompareOptions& options, const PairPlan& plan) {
 
 // --update: the actual frame replaces the reference of every failing pair
 // (one of another size too), and extra frames are added to REF (created if
-// need be), each only when it reads as a PNG; a reference with no actual
-// frame (missing) is kept. Returns why an extra frame was not added.
+// need be), each only when it reads as a PNG (a compared pair's did); a
+// reference with no actual frame (missing) is kept. Returns why an extra
+// frame was not added.
 std::vector<std::string> update_references(const std::vector<PairResult>& results, const PairPlan& plan,
                                            const GlobalOptions& global) {
   size_t updated = 0, added = 0;
   for (const PairResult& r : results)
-    if (!r.pass && r.actual_readable) {
+    if (!r.pass && (r.error.empty() || readable_png(r.actual))) {
       copy_file_atomically(r.actual, r.reference);
       ++updated;
     }

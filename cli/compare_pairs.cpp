@@ -136,7 +136,6 @@ std::vector<PairResult> compare_pairs(const PairPlan& plan, const CompareSetting
           r.error = e.what();
           r.pass = false;
           r.metrics = render::ImageComparison{};
-          r.actual_readable = readable_png(r.actual);
         }
       } catch (...) {
         errors[i] = std::current_exception();

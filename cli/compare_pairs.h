@@ -36,9 +36,8 @@ struct PairResult {
   bool pass = true;
   // Why the pair could not be compared (sizes differ, a PNG cannot be read):
   // the pair fails, with no metrics, and the command exits 2 once every
-  // pair is reported. `actual_readable` says whether --update may copy it.
+  // pair is reported.
   std::string error;
-  bool actual_readable = true;
   // Only when a report is written (see compare_report.h): the full-size heat
   // map as PNG for failing pairs, and small PNGs of reference, actual and heat map.
   std::vector<std::uint8_t> diff_png;
