@@ -1,9 +1,8 @@
 #include "cli/drop_scene.h"
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdlib>
+#include <optional>
 #include <filesystem>
 #include <random>
 
@@ -75,11 +74,8 @@ void add_collision_options(CLI::App& command, CollisionChoice& choice) {
   // The scene's {"triangles": N} takes 4 or more: a closed surface has at least a tetrahedron's faces.
   const CLI::Validator budget(
       [](std::string& text) -> std::string {
-        char* end = nullptr;
-        errno = 0;
-        const long long n = std::strtoll(text.c_str(), &end, 10);
-        const bool whole = !text.empty() && end == text.c_str() + text.size() && errno != ERANGE;
-        return whole && (n == 0 || (n >= kMinCollisionTriangles && n <= kMaxCollisionTriangles))
+        const std::optional<long long> n = whole_number_from_text(text);
+        return n && (*n == 0 || (*n >= kMinCollisionTriangles && *n <= kMaxCollisionTriangles))
                    ? std::string()
                    : "must be 0 (the mesh itself) or " + std::to_string(kMinCollisionTriangles) + " to " +
                          std::to_string(kMaxCollisionTriangles) + " triangles, not '" + text + "'";

@@ -6,11 +6,29 @@
 #include <cerrno>
 #include <cmath>
 #include <cstdlib>
+#include <optional>
 #include <string>
 
 #include "cli/format_number.h"
 
 namespace recoil::cli {
+
+// `text` as a whole decimal number (all of it, not NaN); nothing otherwise.
+inline std::optional<double> number_from_text(const std::string& text) {
+  char* end = nullptr;
+  const double value = std::strtod(text.c_str(), &end);
+  if (text.empty() || end != text.c_str() + text.size() || std::isnan(value)) return std::nullopt;
+  return value;
+}
+
+// `text` as a base-10 integer (all of it, in range of long long); nothing otherwise.
+inline std::optional<long long> whole_number_from_text(const std::string& text) {
+  char* end = nullptr;
+  errno = 0;
+  const long long value = std::strtoll(text.c_str(), &end, 10);
+  if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE) return std::nullopt;
+  return value;
+}
 
 class NumberIn : public CLI::Validator {
  public:
@@ -18,28 +36,24 @@ class NumberIn : public CLI::Validator {
     const std::string range = "[" + format_number("%.10g", least) + ", " + format_number("%.10g", most) + "]";
     description("in " + range);
     func_ = [least, most, range](std::string& text) -> std::string {
-      char* end = nullptr;
-      const double value = std::strtod(text.c_str(), &end);
-      if (text.empty() || end != text.c_str() + text.size() || std::isnan(value))
-        return "must be a number in " + range + ", got '" + text + "'";
-      if (value < least || value > most) return "must be in " + range + ", got " + text;
+      const std::optional<double> value = number_from_text(text);
+      if (!value) return "must be a number in " + range + ", got '" + text + "'";
+      if (*value < least || *value > most) return "must be in " + range + ", got " + text;
       return std::string();
     };
   }
 };
 
-// A number above `least` (not equal to it), in the same words.
+// A finite number above `least` (not equal to it), in the same words.
 class NumberAbove : public CLI::Validator {
  public:
   explicit NumberAbove(double least) {
     const std::string bound = format_number("%.10g", least);
     description("above " + bound);
     func_ = [least, bound](std::string& text) -> std::string {
-      char* end = nullptr;
-      const double value = std::strtod(text.c_str(), &end);
-      if (text.empty() || end != text.c_str() + text.size() || std::isnan(value))
-        return "must be a number above " + bound + ", got '" + text + "'";
-      if (!(value > least) || std::isinf(value)) return "must be a finite number above " + bound + ", got " + text;
+      const std::optional<double> value = number_from_text(text);
+      if (!value) return "must be a number above " + bound + ", got '" + text + "'";
+      if (!(*value > least) || std::isinf(*value)) return "must be a finite number above " + bound + ", got " + text;
       return std::string();
     };
   }
@@ -53,12 +67,9 @@ class WholeNumberIn : public CLI::Validator {
     const std::string range = "[" + std::to_string(least) + ", " + std::to_string(most) + "]";
     description("in " + range);
     func_ = [least, most, range](std::string& text) -> std::string {
-      char* end = nullptr;
-      errno = 0;
-      const long long value = std::strtoll(text.c_str(), &end, 10);
-      if (text.empty() || end != text.c_str() + text.size() || errno == ERANGE)
-        return "must be a whole number in " + range + ", got '" + text + "'";
-      if (value < least || value > most) return "must be in " + range + ", got " + text;
+      const std::optional<long long> value = whole_number_from_text(text);
+      if (!value) return "must be a whole number in " + range + ", got '" + text + "'";
+      if (*value < least || *value > most) return "must be in " + range + ", got " + text;
       return std::string();
     };
   }
