@@ -8,14 +8,21 @@
 #include <string>
 #include <vector>
 
+#include "cli/shell_quote.h"
+
 namespace recoil::cli {
 
 struct GlobalOptions {
   bool quiet = false;     // -q: no progress bar, no summary lines
   bool log_json = false;  // --log-json: machine-readable progress on stderr
   double max_memory_gib = 0.0;  // --max-memory: a run estimated to need more is refused; 0: 80 % of the machine's
-  std::string command_line;     // as typed, shell-quoted: run.json records it
   std::vector<std::string> arguments;  // the words after `recoil`, as given
+  // The command as typed, shell-quoted: what run.json records.
+  std::string command_line() const {
+    std::string line = "recoil";
+    for (const std::string& argument : arguments) line += " " + shell_word(argument);
+    return line;
+  }
 };
 
 using Action = std::function<int()>;

@@ -9,7 +9,6 @@
 #include "cli/commands.h"
 #include "cli/interrupt.h"
 #include "cli/number_range.h"
-#include "cli/shell_quote.h"
 #include "cli/usage_error.h"
 #include "cli/work_limits.h"
 #include "core/error.h"
@@ -41,11 +40,7 @@ int main(int argc, char** argv) {
   app.footer("Run `recoil COMMAND --help` for a command's options and examples.");
 
   cli::GlobalOptions global;
-  global.command_line = "recoil";
-  for (int i = 1; i < argc; ++i) {
-    global.arguments.emplace_back(argv[i]);
-    global.command_line += " " + cli::shell_word(argv[i]);
-  }
+  global.arguments.assign(argv + 1, argv + argc);
   app.add_flag("-q,--quiet", global.quiet, "No progress bar or summary lines (a summary that carries a warning still prints)")->configurable(false);
   app.add_flag("--log-json", global.log_json,
                "Machine-readable lines (JSON) on stderr: progress, the summary, an error (-q does not silence them)");

@@ -123,7 +123,7 @@ int execute_run(SceneDesc scene, const RunOptions& options, const GlobalOptions&
   job.resume = options.resume;
   job.strict = options.strict;
   job.label = command_name;
-  job.command = global.command_line;
+  job.command = global.command_line();
   job.scene = std::move(scene);
   const RunResult result = run_scene(job, global);
   // The summary line: always when it carries a warning, which -q never hides.
