@@ -32,7 +32,10 @@ Eigen::VectorXd FrictionAcceleration::next(const std::vector<int>& members, cons
   wrap_angles(f);
   const bool same = members == m_members;  // the remembered residuals are of these contacts
   const bool grew = same && !m_f.empty() && weights.cwiseProduct(f).norm() > weights.cwiseProduct(m_f.back()).norm();
-  if (!same || grew) reset();
+  // A residual that grew after an extrapolated step discredits the pairs it
+  // came from. After the damped plain step (one pair) it shows that step
+  // diverging, and that pair with this one is the secant along the growth.
+  if (!same || (grew && m_f.size() > 1)) reset();
   m_members = members;
   m_x.push_back(x);
   m_f.push_back(f);

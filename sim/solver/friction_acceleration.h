@@ -21,8 +21,12 @@ class FrictionAcceleration {
   // per entry, two entries each: lambda' in N s and the slip angle in rad).
   // `weights` (m/s per unit) make every entry a velocity, as the KKT residual
   // measures it; `mixing` in (0, 1] is the share of the residual G(x) - x a
-  // step takes. A history of other members is dropped first; so is one whose
-  // residual grew, and then the step is the damped plain one, x + mixing (g - x).
+  // step takes. A history of other members is dropped first, and so is one
+  // whose residual grew after an extrapolated step; the step is then the
+  // damped plain one, x + mixing (g - x). A residual grown after that plain
+  // step keeps its pair: where G's slope is below 1 - 2 / mixing (-3.5 on the
+  // bulging bottom face of a loaded jelly cube) the plain step diverges, and
+  // starting afresh would take it again on every call.
   Eigen::VectorXd next(const std::vector<int>& members, const Eigen::VectorXd& x, const Eigen::VectorXd& g,
                        const Eigen::VectorXd& weights, double mixing);
   // Forgets every pair: the system changed (contacts on or off, modes, rows).

@@ -1,6 +1,6 @@
 // Anderson acceleration of Algorithm 3's fixed point (friction_acceleration.h):
 // it reaches a strongly coupled linear fixed point in a few steps where the
-// damped plain iteration crawls, forgets its pairs when the members change,
+// damped plain iteration crawls or diverges, forgets its pairs when the members change,
 // and measures slip angles across the +-pi seam.
 #include "sim/solver/friction_acceleration.h"
 
@@ -41,6 +41,21 @@ TEST(FrictionAcceleration, ReachesACoupledLinearFixedPointInAFewSteps) {
   const int accelerated = steps_to_fixed_point(A, b, true, 2000);
   EXPECT_GT(plain, 300);
   EXPECT_LE(accelerated, 15);
+}
+
+TEST(FrictionAcceleration, ReachesAFixedPointWhereTheDampedStepDiverges) {
+  // A slope of -3.5 (a loaded jelly cube's bottom face: more friction at a
+  // contact takes load off it) makes the half step x + (G(x) - x) / 2 grow
+  // the residual 1.25 times a step; the residual grows on every such step,
+  // and a history forgotten when it grew never leaves the plain step.
+  Eigen::MatrixXd A(4, 4);
+  A << -3.5, 0.20, 0.00, 0.00,  //
+      0.10, 0.50, 0.00, 0.00,   //
+      0.00, 0.00, 0.30, 0.10,   //
+      0.00, 0.00, 0.00, 0.80;
+  const Eigen::VectorXd b = Eigen::Vector4d(1.0, 0.02, -0.01, 0.01);
+  EXPECT_EQ(steps_to_fixed_point(A, b, false, 200), 200);
+  EXPECT_LE(steps_to_fixed_point(A, b, true, 200), 15);
 }
 
 TEST(FrictionAcceleration, OtherMembersStartAfresh) {
