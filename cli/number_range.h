@@ -13,7 +13,7 @@
 
 namespace recoil::cli {
 
-// `text` as a whole decimal number (all of it, not NaN); nothing otherwise.
+// `text`, all of it, as a number (as strtod reads one, NaN refused); nothing otherwise.
 inline std::optional<double> number_from_text(const std::string& text) {
   char* end = nullptr;
   const double value = std::strtod(text.c_str(), &end);

@@ -1,7 +1,8 @@
 // Anderson acceleration of Algorithm 3's fixed point (friction_acceleration.h):
 // it reaches a strongly coupled linear fixed point in a few steps where the
-// damped plain iteration crawls or diverges, forgets its pairs when the members change,
-// and measures slip angles across the +-pi seam.
+// damped plain iteration crawls or diverges, forgets its pairs when the
+// members change or an extrapolated step grew the residual, and measures
+// slip angles across the +-pi seam.
 #include "sim/solver/friction_acceleration.h"
 
 #include <gtest/gtest.h>
@@ -56,6 +57,19 @@ TEST(FrictionAcceleration, ReachesAFixedPointWhereTheDampedStepDiverges) {
   const Eigen::VectorXd b = Eigen::Vector4d(1.0, 0.02, -0.01, 0.01);
   EXPECT_EQ(steps_to_fixed_point(A, b, false, 200), 200);
   EXPECT_LE(steps_to_fixed_point(A, b, true, 200), 15);
+}
+
+TEST(FrictionAcceleration, AResidualGrownAfterAnExtrapolatedStepStartsAfresh) {
+  FrictionAcceleration acceleration;
+  const Eigen::VectorXd weights = Eigen::VectorXd::Ones(2);
+  // Two pairs with a shrinking residual: the second step is extrapolated.
+  acceleration.next({4}, Eigen::Vector2d(0.0, 0.0), Eigen::Vector2d(1.0, 0.1), weights, 0.5);
+  acceleration.next({4}, Eigen::Vector2d(0.5, 0.05), Eigen::Vector2d(1.2, 0.1), weights, 0.5);
+  // Its residual grew: the pairs are dropped and the step is the damped plain one.
+  const Eigen::Vector2d x(3.0, 0.0), g(5.0, 0.2);
+  const Eigen::VectorXd next = acceleration.next({4}, x, g, weights, 0.5);
+  EXPECT_NEAR(next[0], 4.0, 1e-15);
+  EXPECT_NEAR(next[1], 0.1, 1e-15);
 }
 
 TEST(FrictionAcceleration, OtherMembersStartAfresh) {
