@@ -7,7 +7,7 @@
 
 namespace recoil::sim {
 
-double BestSolvedIterate::kkt_of(const Eigen::VectorXd& y, const std::vector<ContactState>& states) {
+double BestIterate::kkt_of(const Eigen::VectorXd& y, const std::vector<ContactState>& states) {
   std::vector<ContactState> filled(m_problem.rows.size());
   for (size_t k = 0; k < states.size(); ++k) {
     filled[k] = states[k];
@@ -20,7 +20,7 @@ double BestSolvedIterate::kkt_of(const Eigen::VectorXd& y, const std::vector<Con
   return kkt;
 }
 
-double BestSolvedIterate::offer(const Eigen::VectorXd& y) {
+double BestIterate::offer(const Eigen::VectorXd& y) {
   const double kkt = kkt_of(y, m_problem.states);
   if (kkt >= m_kkt) return kkt;
   m_kkt = kkt;
@@ -29,11 +29,11 @@ double BestSolvedIterate::offer(const Eigen::VectorXd& y) {
   return kkt;
 }
 
-void BestSolvedIterate::remeasure() {
+void BestIterate::remeasure() {
   if (m_y.size() > 0) m_kkt = kkt_of(m_y, m_states);
 }
 
-bool BestSolvedIterate::restore_if_better(Eigen::VectorXd& y) {
+bool BestIterate::restore_if_better(Eigen::VectorXd& y) {
   if (m_y.size() == 0) return false;
   if (kkt_of(y, m_problem.states) <= m_kkt) return false;
   y.setZero();

@@ -100,7 +100,7 @@ class CrSolver {
   bool m_stationary = false;       // scaled |B C^-1 r| < epsilon_1 (Algorithm 1 line 21)
   FrictionAcceleration m_acceleration;  // Algorithm 3's pairs since the system last changed otherwise
   bool m_relinearized_ok = false;  // the last relinearize moved nothing beyond epsilon_2, and nothing changed since
-  BestSolvedIterate m_best;  // handed back when the solve ends unconverged
+  BestIterate m_best;  // handed back when the solve ends unconverged
 };
 
 void CrSolver::start_from_warm_states() {
@@ -331,12 +331,14 @@ void CrSolver::restart_true() {
   restart_recurrence();
 }
 
-// restart_true(), counted in the stats (the first start is not a restart).
+// restart_true(), counted in the stats (the first start is not a restart);
+// the iterate it restarts from is a candidate to hand back (cr_best_iterate.h).
 void CrSolver::restart(KrylovStart cause) {
   ++m_stats.restarts;
   m_start = cause;
   ++m_stats.starts[static_cast<size_t>(cause)];
   restart_true();
+  m_best.offer(m_y);
 }
 
 void CrSolver::count_iteration() {
@@ -498,6 +500,7 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   build_rhs();
   ++m_stats.starts[static_cast<size_t>(KrylovStart::first_solve)];
   restart_true();
+  m_best.offer(m_y);  // the warm start
   m_stats.converged = false;
   while (!out_of_budget()) {
     double constraint_inf = 0.0;

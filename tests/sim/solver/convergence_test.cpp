@@ -7,6 +7,8 @@
 #include <iostream>
 #include <limits>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "tests/fixtures/fem_problem.h"
 #include "sim/solver/kkt_residual.h"
@@ -281,6 +283,44 @@ TEST(SolverConvergence, CappedSolveNeverReturnsWorseThanASolvedState) {
             << " m/s (cap " << worst_cap << ")\n";
   EXPECT_GT(solved_caps, 1);
   EXPECT_LE(worst_excess, 1e-12);
+}
+
+// Nor is a capped solve ever further from the contact laws than where it
+// started: the warm start is a candidate, and so is every restart's iterate,
+// since a capped solve may never solve a system between its mid-solve
+// switches. Swept over every cap below the full solve's count, on a soft FEM
+// cube resting on the ground and on random frictional problems, all started
+// cold: handing back solved iterates only, a cube capped at 4 iterations was
+// 0.16 m/s from the laws against 0.027 at its start, and 13 of the 30 random
+// problems had a cap worse than their start.
+TEST(SolverConvergence, CappedSolveNeverReturnsWorseThanItsStart) {
+  struct Case {
+    std::string name;
+    OwnedProblem owned;
+  };
+  std::vector<Case> cases;
+  cases.push_back({"soft FEM cube at rest", fem_block_on_ground(fem_cube(4, 1e5, 0.0))});
+  std::mt19937 rng(77);
+  for (int trial = 0; trial < 30; ++trial)
+    cases.push_back({"random frictional problem " + std::to_string(trial), random_friction_problem(rng)});
+  ContactSolverSettings settings;
+  settings.max_iterations = 100000;
+  double worst_excess = -std::numeric_limits<double>::infinity();
+  for (const Case& c : cases) {
+    const ContactProblem& problem = c.owned.problem;
+    const double start = kkt_residual(problem, Eigen::VectorXd::Zero(problem.b.size())).max();
+    const auto full = solve_copy(problem, settings);
+    ASSERT_TRUE(full.stats.converged) << c.name;
+    for (int cap = 1; cap < full.stats.iterations + full.stats.restarts; ++cap) {
+      ContactSolverSettings capped = settings;
+      capped.max_iterations = cap;
+      const double kkt = solve_copy(problem, capped).stats.kkt;
+      worst_excess = std::max(worst_excess, kkt - start);
+      EXPECT_LE(kkt, start) << c.name << ", cap " << cap;
+    }
+  }
+  std::cout << cases.size() << " problems, every cap: the hand-back's KKT residual less the start's is at most "
+            << worst_excess << " m/s\n";
 }
 
 TEST(SolverConvergence, TwoRunsAreBitIdentical) {
