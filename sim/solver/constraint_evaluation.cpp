@@ -27,15 +27,12 @@ struct Proposal {
   int contact = -1;    // index into the problem's contacts
   ContactState state;
   Eigen::Vector3d f;   // multipliers for y: (lambda, gamma) with gamma = 0 unless sticking
-  ContactTrack track;
   bool mode_change = false;
   bool accept = false;
   double violation = 0.0;  // m/s: how far the contact is from its current mode's law (mode changes only)
 };
 
-Proposal unchanged(const ContactState& s, const ContactTrack& track, const Eigen::Vector3d& f) {
-  return Proposal{-1, s, f, track, false, false};
-}
+Proposal unchanged(const ContactState& s, const Eigen::Vector3d& f) { return Proposal{-1, s, f, false, false}; }
 
 // Proposal p switched off, `violation` m/s from the law.
 void switch_off(Proposal& p, double violation) {
@@ -52,9 +49,9 @@ bool at_rest(const ContactRows& rows, const Evaluation& e) { return rows.rhs_tan
 // Algorithm 2, lines 7-8 (seed): a penetrating inactive contact is activated,
 // in kinetic friction, its slip along the tangential velocity u (none yet
 // when u is below epsilon_2, or when its sides were at rest: reverses()).
-Proposal activate(const ContactRows& rows, const ContactState& s, const ContactTrack& track,
-                  const Eigen::Vector3d& f, double slack, const Eigen::Vector2d& u, const Evaluation& e) {
-  Proposal p = unchanged(s, track, f);
+Proposal activate(const ContactRows& rows, const ContactState& s, const Eigen::Vector3d& f, double slack,
+                  const Eigen::Vector2d& u, const Evaluation& e) {
+  Proposal p = unchanged(s, f);
   p.state.mode = ContactMode::sliding;
   p.state.lambda_kinetic = 0.0;
   const double speed = u.norm();
@@ -130,38 +127,29 @@ void direct_slip(const ContactRows& rows, const Eigen::Vector2d& u, double w_t, 
 
 // Algorithm 2, lines 5-17, for a contact whose normal row is active, at
 // normal slack J_n dv - rhs and tangential velocity u = J_t dv - rhs_t (m/s).
-// Policy: friction changes only at converged evaluations; a frozen contact
-// (past max_flips) keeps its mode, except that one pulling at a converged
-// evaluation (a near-duplicate of an active neighbour: their lambdas grow
-// without bound in opposite directions) is let go for the rest of the solve.
+// Policy: friction changes only at converged evaluations.
 Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const ContactTrack& track,
-                         const Eigen::Vector3d& f, double slack, const Eigen::Vector2d& u, bool frozen,
-                         const Evaluation& e) {
-  Proposal p = unchanged(s, track, f);
+                         const Eigen::Vector3d& f, double slack, const Eigen::Vector2d& u, const Evaluation& e) {
+  Proposal p = unchanged(s, f);
   const double pull = -f[0] * track.w[0];  // m/s: how hard lambda pulls (positive) or pushes
-  if (!frozen && slack >= -e.eps2 && pull > e.eps2) {  // lines 5-6: separating and pulling
+  if (slack >= -e.eps2 && pull > e.eps2) {  // lines 5-6: separating and pulling
     switch_off(p, pull);
-    return p;
-  }
-  if (frozen && e.converged && pull > e.eps2) {
-    switch_off(p, pull);
-    p.track.locked_off = true;
     return p;
   }
   const double w_t = std::max(track.w[1], track.w[2]);
   if (s.mode == ContactMode::sticking) {  // lines 10-13
-    if (!frozen && e.converged) update_static_friction(rows, u, e, w_t, p);
+    if (e.converged) update_static_friction(rows, u, e, w_t, p);
     return p;
   }
   if (!e.converged) return p;  // u is not yet trustworthy
-  if (!frozen && reverses(rows, s, u, e, p)) return p;  // lines 14-16
+  if (reverses(rows, s, u, e, p)) return p;  // lines 14-16
   if (s.impending && u.norm() > e.eps2) {  // its slip has started: kinetic friction from now on
     p.state.impending = false;
     p.mode_change = p.accept = true;
     p.violation = u.norm();
     return p;
   }
-  // Line 17, frozen or not: a directed slip moves with every other one (update_kinetic_friction).
+  // Line 17: a directed slip moves with every other one (update_kinetic_friction).
   if (sliding_mu(rows, s) > 0.0 && s.slip.squaredNorm() == 0.0) direct_slip(rows, u, w_t, e, p);
   return p;
 }
@@ -221,7 +209,7 @@ void hold_back(const ContactProblem& problem, const std::vector<ContactTrack>& t
 // (lines 4-8). All move while one's G(x) - x, weighed as a velocity, is
 // above epsilon_2 (line 18): to first order the KKT residual's friction
 // error, and the step itself, so a contact the step cannot move (its slip
-// reversed, frozen) never keeps the solve restarting; line 9's impulse
+// reversed) never keeps the solve restarting; line 9's impulse
 // -mu lambda' slip is what the states then hold.
 // `tangential` holds u per contact, as Algorithm 2 read it for the active ones.
 void update_kinetic_friction(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
@@ -259,8 +247,7 @@ void update_kinetic_friction(const ContactProblem& problem, const std::vector<Co
       acceleration.next(members, as_vector(x), as_vector(g), as_vector(weights), e.policy.friction_mixing);
   for (size_t i = 0; i < members.size(); ++i) {
     const int k = members[i];
-    Proposal p = unchanged(problem.states[static_cast<size_t>(k)], tracks[static_cast<size_t>(k)],
-                           y.segment<3>(n + 3 * k));
+    Proposal p = unchanged(problem.states[static_cast<size_t>(k)], y.segment<3>(n + 3 * k));
     p.contact = k;
     p.state.lambda_kinetic = std::max(next[static_cast<Eigen::Index>(2 * i)], 0.0);
     const double angle = next[static_cast<Eigen::Index>(2 * i + 1)];
@@ -275,7 +262,7 @@ void update_kinetic_friction(const ContactProblem& problem, const std::vector<Co
 // Algorithm 2 (EvaluateConstraints): every contact's proposal (lines 3-17),
 // the policy's hold-back, then the accepted changes applied (lines 18-21);
 // the solver rebuilds the right-hand side (line 22).
-EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
+EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
                                        const MomentumPreconditioner& P, const ContactSolverSettings& settings,
                                        bool converged, FrictionAcceleration* acceleration) {
   const int m = static_cast<int>(problem.rows.size());
@@ -294,11 +281,10 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
     Proposal p;
     if (s.mode == ContactMode::inactive) {
       // Most candidates are inactive and stay so: their normal row decides,
-      // and the tangent rows are read only for one that comes on. A contact
-      // let go after freezing stays off.
+      // and the tangent rows are read only for one that comes on.
       const double slack = normal_row_times(rows, dv) - rows.rhs_normal;
-      if (!(slack < -e.eps2) || track.locked_off) continue;  // not penetrating (a NaN slack included)
-      p = activate(rows, s, track, f, slack, rows_times(rows, dv).tail<2>() - rows.rhs_tangent, e);
+      if (!(slack < -e.eps2)) continue;  // not penetrating (a NaN slack included)
+      p = activate(rows, s, f, slack, rows_times(rows, dv).tail<2>() - rows.rhs_tangent, e);
     } else {
       // The selected rows' own yield counts as motion (ContactSoftness).
       const Eigen::Vector3d yield = problem.softness.yield(track.w, f, rows);
@@ -307,7 +293,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
       Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
       if (s.mode == ContactMode::sticking) u += yield.tail<2>();
       tangential[static_cast<size_t>(k)] = u;
-      p = evaluate_active(rows, s, track, f, slack, u, track.flips >= settings.max_flips, e);
+      p = evaluate_active(rows, s, track, f, slack, u, e);
     }
     p.contact = k;
     if (p.accept) proposals.push_back(p);
@@ -328,11 +314,8 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<Cont
     if (!p.accept) continue;
     const int k = p.contact;
     problem.states[static_cast<size_t>(k)] = p.state;
-    ContactTrack& track = tracks[static_cast<size_t>(k)];
-    track = p.track;
     y.segment<3>(n + 3 * k) = p.f;
     if (p.mode_change) {
-      ++track.flips;
       ++changed.mode_changes;
     } else {
       ++changed.friction_updates;

@@ -19,15 +19,12 @@ namespace recoil::sim {
 // Solver-side bookkeeping of one contact, beside its ContactState.
 struct ContactTrack {
   Eigen::Vector3d w = Eigen::Vector3d::Zero();  // effective inverse mass of the three rows, 1/kg
-  int flips = 0;                                // mode changes in this solve
-  bool locked_off = false;                      // frozen, then let go for pulling: inactive for the rest of the solve
 };
 
 // Evaluates every contact of `problem` at y (#DoF + 3 #contacts); applies
 // the accepted changes to problem.states and to the multipliers in y. P is
 // P_A^-1 of problem.A, the metric in which rows count as parallel. From
-// `settings`: epsilon_2 (constraint_tolerance), max_flips (contacts past it
-// are frozen active) and the policy. Friction mode changes and Algorithm 3
+// `settings`: epsilon_2 (constraint_tolerance) and the policy. Friction mode changes and Algorithm 3
 // run only when `converged` (y solves the current system). Returns how many
 // contacts changed, mode changes and friction updates apart.
 struct EvaluationChanges {
@@ -38,7 +35,7 @@ struct EvaluationChanges {
 // A converged evaluation moves the sliding contacts' lambda' and slip
 // directions through `acceleration`, which keeps its pairs from one such
 // evaluation to the next (none given: a fresh one, the damped plain step).
-EvaluationChanges evaluate_constraints(ContactProblem& problem, std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
+EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
                                        const MomentumPreconditioner& P, const ContactSolverSettings& settings,
                                        bool converged, FrictionAcceleration* acceleration = nullptr);
 

@@ -1,13 +1,11 @@
 #pragma once
 // Everything the contact evaluation adds to the seed's Algorithms 2 and 3
 // (constraint_evaluation.h), and the rest gap the contact rows add, in one
-// place: each field is a runtime setting
-// with its unit and the reason it exists, and
-// docs/decisions/008-contact-evaluation-rules.md gives the measurements
-// behind each value. Shares and cosines are plain numbers.
-// Three rules have no number: sticking/sliding changes and Algorithm 3 wait
-// for a converged evaluation (a half-converged iterate cycled); a contact
-// past max_flips (ContactSolverSettings) is frozen active; and static
+// place: each field is a runtime setting with its unit and the reason it
+// exists, and docs/decisions/008-contact-evaluation-rules.md gives the
+// measurements behind each value. Shares and cosines are plain numbers.
+// Two rules have no number: sticking/sliding changes and Algorithm 3 wait
+// for a converged evaluation (a half-converged iterate cycled); and static
 // friction acts on contacts whose sides are at relative rest (one comes on
 // without a slip direction and sticks at the converged evaluation, and one
 // that breaks away keeps mu_static until its slip starts:

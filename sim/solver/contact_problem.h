@@ -127,7 +127,6 @@ struct ContactSolverSettings {
                              // the residual scaled to m/s (momentum rows by P_A^-1, multiplier rows by
                              // diag(J P_A^-1 J^T)); pgs: the largest impulse change per sweep, in m/s
   int max_iterations = 5000; // cap over the whole solve, restarts included
-  int max_flips = 8;         // state changes per contact per solve before its state is frozen
   // Added with the solvers (sim/solver/constraint_evaluation.h):
   double constraint_tolerance = 1e-6;  // epsilon_2, m/s: smallest accepted change of a contact, and
                                        // the bound on each constraint row's residual at convergence
@@ -169,8 +168,6 @@ struct ContactSolverStats {
   double ms = 0.0;             // wall-clock
   // Added with the solvers: the common accuracy measure (sim/solver/kkt_residual.h), m/s.
   double kkt = 0.0;
-  // contacts that reached max_flips (frozen in the active state; cr only).
-  int frozen = 0;
   // (cr and cr_plain only) Krylov solves started per
   // cause, and the iterations each cause's solves took (until the next start).
   std::array<int, kKrylovStarts> starts{}, start_iterations{};

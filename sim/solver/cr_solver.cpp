@@ -535,7 +535,7 @@ void CrSolver::run(Eigen::VectorXd& dv) {
   double constraint_inf = 0.0;
   m_stats.residual = residual_norm(constraint_inf);
   dv = m_y.head(m_n);
-  hand_back_states(m_problem, m_tracks, m_y, m_settings, m_stats);
+  hand_back_states(m_problem, m_y, m_stats);
 }
 
 }  // namespace

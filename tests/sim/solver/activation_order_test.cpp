@@ -14,7 +14,6 @@ namespace recoil::sim {
 namespace {
 
 constexpr double kEps2 = 1e-6;  // m/s
-constexpr int kMaxFlips = 8;
 
 // One free point mass (A = m I, so the P_A^-1 metric is the plain one) with
 // three inactive contacts on it: normals (0, 0, 1), `second` and (1, 0, 0),
@@ -42,7 +41,6 @@ struct PointWithThreeContacts {
   int evaluate(bool converged, const ContactPolicy& policy = {}) {
     ContactSolverSettings settings;
     settings.constraint_tolerance = kEps2;
-    settings.max_flips = kMaxFlips;
     settings.policy = policy;
     return evaluate_constraints(owned.problem, tracks, y, *P, settings, converged).total();
   }
