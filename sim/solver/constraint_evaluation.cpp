@@ -9,6 +9,7 @@
 
 #include "core/check.h"
 #include "sim/solver/contact_rows_ops.h"
+#include "sim/solver/taken_normal_rows.h"
 
 namespace recoil::sim {
 
@@ -29,17 +30,16 @@ struct Proposal {
   Eigen::Vector3d f;   // multipliers for y: (lambda, gamma) with gamma = 0 unless sticking
   bool mode_change = false;
   bool accept = false;
-  double violation = 0.0;  // m/s: how far the contact is from its current mode's law (mode changes only)
+  double depth = 0.0;  // m/s: how far an activated contact penetrates (the hold-back takes the deepest first)
 };
 
 Proposal unchanged(const ContactState& s, const Eigen::Vector3d& f) { return Proposal{-1, s, f, false, false}; }
 
-// Proposal p switched off, `violation` m/s from the law.
-void switch_off(Proposal& p, double violation) {
+// Proposal p switched off.
+void switch_off(Proposal& p) {
   p.state = ContactState{};
   p.f.setZero();
   p.mode_change = p.accept = true;
-  p.violation = violation;
 }
 
 // Whether a contact's two sides were at rest relative to each other as the
@@ -58,7 +58,7 @@ Proposal activate(const ContactRows& rows, const ContactState& s, const Eigen::V
   p.state.slip = speed > e.eps2 && !at_rest(rows, e) ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
   p.f.setZero();
   p.mode_change = p.accept = true;
-  p.violation = -slack;
+  p.depth = -slack;
   return p;
 }
 
@@ -82,7 +82,6 @@ void update_static_friction(const ContactRows& rows, const Eigen::Vector2d& u, c
   p.state.gamma.setZero();
   p.f.tail<2>().setZero();
   p.mode_change = p.accept = true;
-  p.violation = excess;
 }
 
 // Algorithm 2, lines 14-16: a sliding contact whose slip runs backwards
@@ -109,7 +108,6 @@ bool reverses(const ContactRows& rows, const ContactState& s, const Eigen::Vecto
   p.state.lambda_kinetic = 0.0;
   p.state.slip.setZero();
   p.mode_change = p.accept = true;
-  p.violation = undirected ? e.eps2 : -u.dot(s.slip);
   return true;
 }
 
@@ -133,7 +131,7 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   Proposal p = unchanged(s, f);
   const double pull = -f[0] * track.w[0];  // m/s: how hard lambda pulls (positive) or pushes
   if (slack >= -e.eps2 && pull > e.eps2) {  // lines 5-6: separating and pulling
-    switch_off(p, pull);
+    switch_off(p);
     return p;
   }
   const double w_t = std::max(track.w[1], track.w[2]);
@@ -146,7 +144,6 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   if (s.impending && u.norm() > e.eps2) {  // its slip has started: kinetic friction from now on
     p.state.impending = false;
     p.mode_change = p.accept = true;
-    p.violation = u.norm();
     return p;
   }
   // Line 17: a directed slip moves with every other one (update_kinetic_friction).
@@ -154,49 +151,35 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
   return p;
 }
 
-// Policy (change_share, parallel) on the proposals of one evaluation: mode
-// changes are ranked by violation and only those within change_share of
-// the worst are applied; of the activations left, the deepest goes first
-// and one whose normal row is within `parallel` of a row already taken
-// waits. Mid-solve the active rows count as taken too; at a converged
-// evaluation they do not, or a contact beside a loaded one could never
-// come on. `proposals` holds the proposing contacts only, in ascending
-// contact order.
+// Policy (parallel) on the activations of one evaluation: the deepest goes
+// first, and one whose normal row is within `parallel` of a row already
+// taken waits. Mid-solve the active rows count as taken too; at a converged
+// evaluation they do not, or a contact beside a loaded one could never come
+// on. `proposals` holds the proposing contacts only, in ascending contact
+// order.
 void hold_back(const ContactProblem& problem, const std::vector<ContactTrack>& tracks, const MomentumPreconditioner& P,
                const Evaluation& e, std::vector<Proposal>& proposals) {
-  double worst = 0.0;  // the largest violation among proposed mode changes, m/s
-  for (const Proposal& p : proposals)
-    if (p.mode_change) worst = std::max(worst, p.violation);
-  for (Proposal& p : proposals)
-    if (p.mode_change && p.violation < e.policy.change_share * worst) p.accept = false;
   std::vector<int> order;  // indices into `proposals`: the activations, deepest first
-  std::vector<int> taken;  // contact indices: the normal rows already on
-  if (!e.converged)
-    for (size_t k = 0; k < problem.states.size(); ++k)
-      if (problem.states[k].mode != ContactMode::inactive) taken.push_back(static_cast<int>(k));
   for (size_t i = 0; i < proposals.size(); ++i) {
     const Proposal& p = proposals[i];
     const bool active = problem.states[static_cast<size_t>(p.contact)].mode != ContactMode::inactive;
     if (!active && p.accept && p.mode_change) order.push_back(static_cast<int>(i));
   }
+  if (order.empty()) return;
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return proposals[static_cast<size_t>(a)].violation > proposals[static_cast<size_t>(b)].violation;
+    return proposals[static_cast<size_t>(a)].depth > proposals[static_cast<size_t>(b)].depth;
   });
+  TakenNormalRows taken(problem, tracks, P, e.policy.parallel);
+  if (!e.converged)
+    for (size_t k = 0; k < problem.states.size(); ++k)
+      if (problem.states[k].mode != ContactMode::inactive) taken.take(static_cast<int>(k));
   for (int i : order) {
     Proposal& p = proposals[static_cast<size_t>(i)];
-    const int k = p.contact;
-    const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
-    const double w_k = tracks[static_cast<size_t>(k)].w[0];
-    for (int t : taken) {
-      // The cosine of the two normal rows in the P_A^-1 metric.
-      const double w_t = tracks[static_cast<size_t>(t)].w[0];
-      const double product = normal_rows_product(rows, problem.rows[static_cast<size_t>(t)], P);
-      if (w_k > 0.0 && w_t > 0.0 && product > e.policy.parallel * std::sqrt(w_k * w_t)) {
-        p.accept = false;
-        break;
-      }
+    if (taken.parallel_to_taken(p.contact)) {
+      p.accept = false;
+    } else {
+      taken.take(p.contact);
     }
-    if (p.accept) taken.push_back(k);
   }
 }
 

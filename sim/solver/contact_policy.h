@@ -27,10 +27,6 @@ struct ContactPolicy {
   // -cosine past which a sliding contact's slip counts as reversed and it
   // sticks (0.5: 120 degrees); a slip turned less is a direction to follow.
   double reversal = 0.5;
-  // Share of the largest violation (m/s) within which proposed mode changes
-  // are applied; the rest wait: all at once over-constrains a landing corner
-  // and cycles.
-  double change_share = 0.9;
   // Cosine (in the P_A^-1 metric) above which two normal rows count as one:
   // an activation that parallel to a row already on waits, so near-duplicate
   // rows never come on together.

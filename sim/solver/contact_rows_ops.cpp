@@ -97,7 +97,22 @@ Eigen::Matrix3d contact_block(const ContactRows& rows, const MomentumPreconditio
   return W;
 }
 
+NormalRowModes normal_row_modes(const ContactRows& rows, const MomentumPreconditioner& P) {
+  const BodyModeRows modes = rows_times_modes(rows, P);
+  NormalRowModes out;
+  out.count = modes.count;
+  out.body = modes.body;
+  for (size_t slot = 0; slot < static_cast<size_t>(modes.count); ++slot)
+    out.row[slot] = modes.rows_times_modes[slot].row(0);
+  return out;
+}
+
 double normal_rows_product(const ContactRows& a, const ContactRows& b, const MomentumPreconditioner& P) {
+  return normal_rows_product(a, normal_row_modes(a, P), b, normal_row_modes(b, P), P);
+}
+
+double normal_rows_product(const ContactRows& a, const NormalRowModes& modes_a, const ContactRows& b,
+                           const NormalRowModes& modes_b, const MomentumPreconditioner& P) {
   // Node lists are ascending: walk both once.
   double product = 0.0;
   size_t i = 0, j = 0;
@@ -112,13 +127,18 @@ double normal_rows_product(const ContactRows& a, const ContactRows& b, const Mom
       ++j;
     }
   }
-  const BodyModeRows modes_a = rows_times_modes(a, P), modes_b = rows_times_modes(b, P);
   for (size_t sa = 0; sa < static_cast<size_t>(modes_a.count); ++sa)
     for (size_t sb = 0; sb < static_cast<size_t>(modes_b.count); ++sb)
       if (modes_a.body[sa] == modes_b.body[sb])
-        product += modes_a.rows_times_modes[sa].row(0).dot(P.coarse_inverse(modes_a.body[sa]) *
-                                                             modes_b.rows_times_modes[sb].row(0).transpose());
+        product += modes_a.row[sa].dot(P.coarse_inverse(modes_a.body[sa]) * modes_b.row[sb].transpose());
   return product;
+}
+
+double normal_row_rigid_part(const NormalRowModes& modes, const MomentumPreconditioner& P) {
+  double part = 0.0;
+  for (size_t slot = 0; slot < static_cast<size_t>(modes.count); ++slot)
+    part += modes.row[slot].dot(P.coarse_inverse(modes.body[slot]) * modes.row[slot].transpose());
+  return part;
 }
 
 double sliding_mu(const ContactRows& rows, const ContactState& state) {

@@ -4,6 +4,7 @@
 // the per-row effective inverse mass diag(J P_A^-1 J^T) that turns an
 // impulse (N s) into a velocity (m/s), P_A^-1 as in momentum_preconditioner.h.
 #include <Eigen/Core>
+#include <array>
 #include <optional>
 #include <vector>
 
@@ -54,6 +55,23 @@ Eigen::Matrix3d contact_block(const ContactRows& rows, const MomentumPreconditio
 // touch, 1/kg (0 when they share neither; for a = b it is
 // effective_inverse_mass(a)[0]).
 double normal_rows_product(const ContactRows& a, const ContactRows& b, const MomentumPreconditioner& P);
+
+// A normal row's velocities under the rigid motions of the bodies its
+// contact touches (J_n Z_b, 1 by 6 each, at most two bodies): what
+// normal_rows_product recomputes per pair, for a caller measuring many pairs.
+struct NormalRowModes {
+  int count = 0;
+  std::array<int, 2> body{};
+  std::array<Eigen::Matrix<double, 1, 6>, 2> row;
+};
+NormalRowModes normal_row_modes(const ContactRows& rows, const MomentumPreconditioner& P);
+double normal_rows_product(const ContactRows& a, const NormalRowModes& modes_a, const ContactRows& b,
+                           const NormalRowModes& modes_b, const MomentumPreconditioner& P);
+
+// The part of effective_inverse_mass(rows)[0] that comes through those
+// rigid motions (P_A^-1's coarse term), 1/kg: the only coupling two normal
+// rows without a shared DoF node can have.
+double normal_row_rigid_part(const NormalRowModes& modes, const MomentumPreconditioner& P);
 
 // The friction coefficient of a sliding contact: mu_static while its slip
 // has not started (ContactState::impending), mu_kinetic after.

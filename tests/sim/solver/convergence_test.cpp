@@ -261,7 +261,7 @@ TEST(SolverConvergence, CappedSolveNeverReturnsWorseThanASolvedState) {
   double best_solved = std::numeric_limits<double>::infinity();
   int solved_caps = 0, checked = 0, worst_cap = 0;
   double worst_excess = 0.0;
-  for (int cap = 5; cap < full.stats.iterations + full.stats.restarts; cap += 5) {
+  for (int cap = 1; cap < full.stats.iterations + full.stats.restarts; ++cap) {
     settings.max_iterations = cap;
     const auto s = solve_copy(owned.problem, settings);
     if (std::isfinite(best_solved)) {
