@@ -245,9 +245,10 @@ void update_kinetic_friction(const ContactProblem& problem, const std::vector<Co
 // Algorithm 2 (EvaluateConstraints): every contact's proposal (lines 3-17),
 // the policy's hold-back, then the accepted changes applied (lines 18-21);
 // the solver rebuilds the right-hand side (line 22).
-EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
-                                       const MomentumPreconditioner& P, const ContactSolverSettings& settings,
-                                       bool converged, FrictionAcceleration* acceleration) {
+EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<ContactTrack>& tracks,
+                                       Eigen::VectorXd& y, const MomentumPreconditioner& P,
+                                       const ContactSolverSettings& settings, bool converged,
+                                       FrictionAcceleration* acceleration) {
   const int m = static_cast<int>(problem.rows.size());
   const int n = static_cast<int>(y.size()) - 3 * m;
   RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);

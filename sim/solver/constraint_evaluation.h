@@ -24,9 +24,10 @@ struct ContactTrack {
 // Evaluates every contact of `problem` at y (#DoF + 3 #contacts); applies
 // the accepted changes to problem.states and to the multipliers in y. P is
 // P_A^-1 of problem.A, the metric in which rows count as parallel. From
-// `settings`: epsilon_2 (constraint_tolerance) and the policy. Friction mode changes and Algorithm 3
-// run only when `converged` (y solves the current system). Returns how many
-// contacts changed, mode changes and friction updates apart.
+// `settings`: epsilon_2 (constraint_tolerance) and the policy. Friction mode
+// changes and Algorithm 3 run only when `converged` (y solves the current
+// system). Returns how many contacts changed, mode changes and friction
+// updates apart.
 struct EvaluationChanges {
   int mode_changes = 0;      // contacts switched on or off, or between sticking and sliding
   int friction_updates = 0;  // sliding contacts given a new lambda' or slip direction, mode kept
@@ -35,8 +36,9 @@ struct EvaluationChanges {
 // A converged evaluation moves the sliding contacts' lambda' and slip
 // directions through `acceleration`, which keeps its pairs from one such
 // evaluation to the next (none given: a fresh one, the damped plain step).
-EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<ContactTrack>& tracks, Eigen::VectorXd& y,
-                                       const MomentumPreconditioner& P, const ContactSolverSettings& settings,
-                                       bool converged, FrictionAcceleration* acceleration = nullptr);
+EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<ContactTrack>& tracks,
+                                       Eigen::VectorXd& y, const MomentumPreconditioner& P,
+                                       const ContactSolverSettings& settings, bool converged,
+                                       FrictionAcceleration* acceleration = nullptr);
 
 }  // namespace recoil::sim

@@ -58,8 +58,8 @@ TEST(TakenNormalRows, DecidesAsMeasuringEveryPair) {
           parallel = true;
           const auto& a = problem.rows[k].nodes;
           const auto& b = problem.rows[t].nodes;
-          through_shared_node = through_shared_node ||
-                                std::any_of(a.begin(), a.end(), [&](int i) { return std::count(b.begin(), b.end(), i); });
+          const auto in_b = [&](int i) { return std::count(b.begin(), b.end(), i) > 0; };
+          through_shared_node = through_shared_node || std::any_of(a.begin(), a.end(), in_b);
         }
       }
       ASSERT_EQ(taken.parallel_to_taken(k), parallel) << "stiffness " << stiffness << ", contact " << k;
