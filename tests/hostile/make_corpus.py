@@ -284,7 +284,7 @@ add("start-interpenetrating.json", json.dumps(s), "", more=["'box'", "'box2'"])
 
 # A soft bunny thrown at the ground at 2 km/s folds through itself on impact:
 # the runaway contact search stops the run (exit 3) at its second step, with
-# four times the candidates it allows. (At 80 m/s the contact solve holds
+# several times the candidates it allows. (At 80 m/s the contact solve holds
 # the crushed bunny to 16-18 candidates a vertex, and the run ends on its
 # inverted elements after 0.1 s: 20 steps of 7-10 s each.)
 bunny = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "assets", "meshes", "bunny.obj")
