@@ -7,12 +7,11 @@ namespace recoil::sim {
 TakenNormalRows::TakenNormalRows(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
                                  const MomentumPreconditioner& P, double cosine)
     : m_problem(problem), m_tracks(tracks), m_P(P), m_cosine(cosine),
-      m_modes(problem.rows.size()), m_modes_known(problem.rows.size(), false), m_measured(problem.rows.size(), 0) {}
+      m_modes(problem.rows.size()), m_measured(problem.rows.size(), 0) {}
 
 const TakenNormalRows::Modes& TakenNormalRows::modes(int k) {
   Modes& out = m_modes[static_cast<size_t>(k)];
-  if (!m_modes_known[static_cast<size_t>(k)]) {
-    m_modes_known[static_cast<size_t>(k)] = true;
+  if (out.share < 0.0) {
     out.modes = normal_row_modes(m_problem.rows[static_cast<size_t>(k)], m_P);
     const double w = m_tracks[static_cast<size_t>(k)].w[0];
     out.share = w > 0.0 ? std::sqrt(normal_row_rigid_part(out.modes, m_P) / w) : 0.0;

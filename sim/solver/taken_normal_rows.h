@@ -33,7 +33,7 @@ class TakenNormalRows {
   // Contact k's normal-row rigid motions and their share r, computed once.
   struct Modes {
     NormalRowModes modes;
-    double share = 0.0;
+    double share = -1.0;  // negative: not computed yet
   };
   const Modes& modes(int k);
   bool measure(int k, int t);  // the exact test for one pair, each pair once per proposal
@@ -45,7 +45,6 @@ class TakenNormalRows {
   std::unordered_map<int, std::vector<int>> m_by_node;  // DoF node -> taken contacts touching it
   std::unordered_map<int, std::vector<int>> m_by_body;  // body -> taken contacts with r above the cosine
   std::vector<Modes> m_modes;                           // per contact
-  std::vector<bool> m_modes_known;                      // per contact: m_modes filled
   std::vector<int> m_measured;                          // per contact: the proposal it was last measured for
   int m_proposal = 0;
 };
