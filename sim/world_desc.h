@@ -27,7 +27,6 @@ struct PlaneDesc {
 struct ContactSettings {
   double margin = 0.002;        // m: candidates closer than this (plus their motion) enter the solver
   ContactSolverSettings solver;
-  ContactSoftness softness;  // of the contact rows (contact_problem.h); zero: exact rows
   int num_threads = 1;          // collision queries and weighing open meshes; results identical for any value
 };
 

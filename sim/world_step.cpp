@@ -210,7 +210,6 @@ void World::collide_and_solve(StepReport& report) {
   problem.A = &m_A;
   problem.preconditioner = &*m_preconditioner;
   problem.b = m_b;
-  problem.softness = m_contact.softness;
   // Rows linearised at the contact-free prediction (the solver itself starts
   // from dv = 0 on the bodies they touch: contact_solve_start).
   model.build(candidates, m_dv, m_memory, problem);

@@ -39,7 +39,7 @@ class MomentumPreconditioner {
   // sum only grows): a stop test that is passed early need not read every node.
   double applied_squared_norm(const Vector& x, double stop_above) const;
 
-  // D^-1 for one node, and all of them (block SSOR builds on these).
+  // D^-1 for one node, and all of them.
   const Eigen::Matrix3d& diagonal_inverse(int node) const { return m_inv_diag[static_cast<size_t>(node)]; }
   const std::vector<Eigen::Matrix3d>& diagonal_inverses() const { return m_inv_diag; }
 

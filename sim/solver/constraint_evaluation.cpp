@@ -126,15 +126,15 @@ void direct_slip(const ContactRows& rows, const Eigen::Vector2d& u, double w_t, 
 // Algorithm 2, lines 5-17, for a contact whose normal row is active, at
 // normal slack J_n dv - rhs and tangential velocity u = J_t dv - rhs_t (m/s).
 // Policy: friction changes only at converged evaluations.
-Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const ContactTrack& track,
+Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const Eigen::Vector3d& w,
                          const Eigen::Vector3d& f, double slack, const Eigen::Vector2d& u, const Evaluation& e) {
   Proposal p = unchanged(s, f);
-  const double pull = -f[0] * track.w[0];  // m/s: how hard lambda pulls (positive) or pushes
+  const double pull = -f[0] * w[0];  // m/s: how hard lambda pulls (positive) or pushes
   if (slack >= -e.eps2 && pull > e.eps2) {  // lines 5-6: separating and pulling
     switch_off(p);
     return p;
   }
-  const double w_t = std::max(track.w[1], track.w[2]);
+  const double w_t = std::max(w[1], w[2]);
   if (s.mode == ContactMode::sticking) {  // lines 10-13
     if (e.converged) update_static_friction(rows, u, e, w_t, p);
     return p;
@@ -157,8 +157,8 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const C
 // evaluation they do not, or a contact beside a loaded one could never come
 // on. `proposals` holds the proposing contacts only, in ascending contact
 // order.
-void hold_back(const ContactProblem& problem, const std::vector<ContactTrack>& tracks, const MomentumPreconditioner& P,
-               const Evaluation& e, std::vector<Proposal>& proposals) {
+void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>& inverse_masses,
+               const MomentumPreconditioner& P, const Evaluation& e, std::vector<Proposal>& proposals) {
   std::vector<int> order;  // indices into `proposals`: the activations, deepest first
   for (size_t i = 0; i < proposals.size(); ++i) {
     const Proposal& p = proposals[i];
@@ -169,7 +169,7 @@ void hold_back(const ContactProblem& problem, const std::vector<ContactTrack>& t
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return proposals[static_cast<size_t>(a)].depth > proposals[static_cast<size_t>(b)].depth;
   });
-  TakenNormalRows taken(problem, tracks, P, e.policy.parallel);
+  TakenNormalRows taken(problem, inverse_masses, P, e.policy.parallel);
   if (!e.converged)
     for (size_t k = 0; k < problem.states.size(); ++k)
       if (problem.states[k].mode != ContactMode::inactive) taken.take(static_cast<int>(k));
@@ -195,7 +195,7 @@ void hold_back(const ContactProblem& problem, const std::vector<ContactTrack>& t
 // reversed) never keeps the solve restarting; line 9's impulse
 // -mu lambda' slip is what the states then hold.
 // `tangential` holds u per contact, as Algorithm 2 read it for the active ones.
-void update_kinetic_friction(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
+void update_kinetic_friction(const ContactProblem& problem, const std::vector<Eigen::Vector3d>& inverse_masses,
                              const Eigen::VectorXd& y, int n, const std::vector<Eigen::Vector2d>& tangential,
                              const std::vector<int>& changing, const Evaluation& e, FrictionAcceleration& acceleration,
                              std::vector<Proposal>& proposals) {
@@ -209,7 +209,7 @@ void update_kinetic_friction(const ContactProblem& problem, const std::vector<Co
     if (s.mode != ContactMode::sliding || s.slip.squaredNorm() == 0.0 || mu <= 0.0 ||
         rows.nodes.empty() || std::binary_search(changing.begin(), changing.end(), static_cast<int>(k)))
       continue;
-    const double w_t = std::max(tracks[k].w[1], tracks[k].w[2]);
+    const double w_t = std::max(inverse_masses[k][1], inverse_masses[k][2]);
     const Eigen::Vector2d& u = tangential[k];
     const Eigen::Vector2d target = u + w_t * mu * s.lambda_kinetic * s.slip;
     const Eigen::Vector2d aim = target.squaredNorm() > 0.0 ? target : s.slip;
@@ -245,13 +245,13 @@ void update_kinetic_friction(const ContactProblem& problem, const std::vector<Co
 // Algorithm 2 (EvaluateConstraints): every contact's proposal (lines 3-17),
 // the policy's hold-back, then the accepted changes applied (lines 18-21);
 // the solver rebuilds the right-hand side (line 22).
-EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<ContactTrack>& tracks,
+EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<Eigen::Vector3d>& inverse_masses,
                                        Eigen::VectorXd& y, const MomentumPreconditioner& P,
                                        const ContactSolverSettings& settings, bool converged,
                                        FrictionAcceleration* acceleration) {
   const int m = static_cast<int>(problem.rows.size());
   const int n = static_cast<int>(y.size()) - 3 * m;
-  RECOIL_CHECK(n >= 0 && static_cast<int>(tracks.size()) == m && static_cast<int>(problem.states.size()) == m);
+  RECOIL_CHECK(n >= 0 && static_cast<int>(inverse_masses.size()) == m && static_cast<int>(problem.states.size()) == m);
   const Evaluation e{settings.policy, settings.constraint_tolerance, converged};
   const Eigen::VectorXd dv = y.head(n);
   std::vector<Proposal> proposals;  // the contacts that propose a change: per-contact ones in ascending order, then Algorithm 3's
@@ -259,7 +259,6 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vecto
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
     const ContactState& s = problem.states[static_cast<size_t>(k)];
-    const ContactTrack& track = tracks[static_cast<size_t>(k)];
     const Eigen::Vector3d f = y.segment<3>(n + 3 * k);
     if (rows.nodes.empty()) continue;  // touches only fixed DoF: nothing to solve for
     Proposal p;
@@ -270,19 +269,16 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vecto
       if (!(slack < -e.eps2)) continue;  // not penetrating (a NaN slack included)
       p = activate(rows, s, f, slack, rows_times(rows, dv).tail<2>() - rows.rhs_tangent, e);
     } else {
-      // The selected rows' own yield counts as motion (ContactSoftness).
-      const Eigen::Vector3d yield = problem.softness.yield(track.w, f, rows);
       const Eigen::Vector3d jdv = rows_times(rows, dv);
-      const double slack = jdv[0] + yield[0] - rows.rhs_normal;
-      Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
-      if (s.mode == ContactMode::sticking) u += yield.tail<2>();
+      const double slack = jdv[0] - rows.rhs_normal;
+      const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
       tangential[static_cast<size_t>(k)] = u;
-      p = evaluate_active(rows, s, track, f, slack, u, e);
+      p = evaluate_active(rows, s, inverse_masses[static_cast<size_t>(k)], f, slack, u, e);
     }
     p.contact = k;
     if (p.accept) proposals.push_back(p);
   }
-  hold_back(problem, tracks, P, e, proposals);
+  hold_back(problem, inverse_masses, P, e, proposals);
   if (converged) {
     std::optional<FrictionAcceleration> fresh;  // for an evaluation that keeps no pairs
     if (acceleration == nullptr) acceleration = &fresh.emplace();
@@ -291,7 +287,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vecto
       if (p.accept && p.mode_change) changing.push_back(p.contact);
     // A change of modes changes the system that G(x) solved: the remembered pairs no longer hold.
     if (!changing.empty()) acceleration->reset();
-    update_kinetic_friction(problem, tracks, y, n, tangential, changing, e, *acceleration, proposals);
+    update_kinetic_friction(problem, inverse_masses, y, n, tangential, changing, e, *acceleration, proposals);
   }
   EvaluationChanges changed;
   for (const Proposal& p : proposals) {

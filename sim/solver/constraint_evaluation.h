@@ -16,13 +16,9 @@
 
 namespace recoil::sim {
 
-// Solver-side bookkeeping of one contact, beside its ContactState.
-struct ContactTrack {
-  Eigen::Vector3d w = Eigen::Vector3d::Zero();  // effective inverse mass of the three rows, 1/kg
-};
-
 // Evaluates every contact of `problem` at y (#DoF + 3 #contacts); applies
-// the accepted changes to problem.states and to the multipliers in y. P is
+// the accepted changes to problem.states and to the multipliers in y.
+// inverse_masses: per contact, its three rows' effective_inverse_mass. P is
 // P_A^-1 of problem.A, the metric in which rows count as parallel. From
 // `settings`: epsilon_2 (constraint_tolerance) and the policy. Friction mode
 // changes and Algorithm 3 run only when `converged` (y solves the current
@@ -36,7 +32,7 @@ struct EvaluationChanges {
 // A converged evaluation moves the sliding contacts' lambda' and slip
 // directions through `acceleration`, which keeps its pairs from one such
 // evaluation to the next (none given: a fresh one, the damped plain step).
-EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<ContactTrack>& tracks,
+EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vector<Eigen::Vector3d>& inverse_masses,
                                        Eigen::VectorXd& y, const MomentumPreconditioner& P,
                                        const ContactSolverSettings& settings, bool converged,
                                        FrictionAcceleration* acceleration = nullptr);

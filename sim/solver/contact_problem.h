@@ -11,9 +11,7 @@
 //   world inertia tensor as their 3x3 diagonal blocks).
 // - Contact k's rows J_k (3 by #DoF): row 0 is the normal (J_n dv grows the
 //   gap), rows 1-2 the tangents t1, t2 of an orthonormal basis.
-// - Non-penetration: J_n dv >= rhs_normal, multiplier lambda >= 0 (rows that
-//   yield by ContactSoftness, below, add c (f - f0) on the left here and in
-//   the sticking rows).
+// - Non-penetration: J_n dv >= rhs_normal, multiplier lambda >= 0.
 // - Sticking: J_t dv = rhs_tangent, multiplier gamma in R^2, valid while
 //   |gamma| <= mu_static * lambda.
 // - Sliding: no tangent rows; a known impulse -mu * lambda' * slip enters
@@ -43,9 +41,6 @@ struct ContactRows {
   Eigen::Vector2d rhs_tangent = Eigen::Vector2d::Zero();  // m/s: J_t dv = rhs_tangent while sticking
   double mu_static = 0.5;
   double mu_kinetic = 0.5;
-  // N s, (normal, t1, t2): the impulses the rows' compliance is measured
-  // from (ContactSoftness below); solve_contacts sets it to the warm start.
-  Eigen::Vector3d softness_centre = Eigen::Vector3d::Zero();
 };
 
 enum class ContactMode : std::uint8_t { inactive, sticking, sliding };
@@ -65,31 +60,6 @@ struct ContactState {
   bool impending = false;
 };
 
-// How far the selected rows of a contact yield, dimensionless: a selected
-// row r reads J_r dv + c_r (f_r - f0_r) = rhs_r (>= for the normal), with
-// compliance c_r = softness * w_r in 1/kg, w_r the row's effective inverse
-// mass diag(J P_A^-1 J^T), and f0 the contact's warm-start impulse
-// (ContactRows::softness_centre). Physically an implicit spring of
-// stiffness 1 / (c_r h^2) on the row's effective mass, natural frequency
-// 1 / (h sqrt(softness)), preloaded with last step's impulse. The
-// multipliers become unique where rows are redundant (a box's four corners
-// on a plane, coincident vertices of touching faces), and the rows yield
-// only by the change of their impulse over a step: a contact whose load is
-// steady holds exactly. The World keeps it at zero for now
-// (docs/decisions/004-soft-contact-rows.md says why).
-struct ContactSoftness {
-  double normal = 0.0;   // normal rows
-  double tangent = 0.0;  // tangent rows of a sticking contact
-  Eigen::Vector3d compliance(const Eigen::Vector3d& w) const {
-    return {normal * w[0], tangent * w[1], tangent * w[2]};
-  }
-  // c (f - f0), m/s: how far rows with effective inverse masses w and
-  // impulses f fall short of their right-hand sides.
-  Eigen::Vector3d yield(const Eigen::Vector3d& w, const Eigen::Vector3d& f, const ContactRows& rows) const {
-    return compliance(w).cwiseProduct(f - rows.softness_centre);
-  }
-};
-
 struct ContactProblem {
   const BlockSparseMatrix* A = nullptr;  // #DoF by #DoF, SPD; fixed nodes are identity rows with b = 0
   // P_A^-1 of A (momentum_preconditioner.h) with the deformable bodies'
@@ -98,7 +68,6 @@ struct ContactProblem {
   Eigen::VectorXd b;                     // #DoF
   std::vector<ContactRows> rows;         // one per contact
   std::vector<ContactState> states;      // same size as rows: in, the warm start; out, the solution
-  ContactSoftness softness;              // zero: the rows hold exactly
   // #DoF, or empty (zero): where cr's and cr_plain's dv starts. Zero suits a
   // body in contact (resting contacts end near dv = 0); a body no row
   // touches starts at its contact-free solution, which answers it exactly,
@@ -111,16 +80,6 @@ struct ContactProblem {
 enum class SolverMethod { cr, cr_plain, pgs };
 const char* to_string(SolverMethod method);
 
-// C = diag(P_A, P_S) for `cr`: block_jacobi = P_A^-1 of
-// problem.preconditioner (3x3 diagonal blocks of A, plus the bodies' rigid
-// modes when given) and diag(J P_A^-1 J^T); contact_blocks = the same P_A
-// with each contact's 3x3 block J_k P_A^-1 J_k^T on its selected rows;
-// ssor = block SSOR (omega 1.5) for P_A, without the rigid modes (a stiff
-// body converges slowly under it), with the contact blocks. Measurements in
-// docs/decisions/009-contact-preconditioner.md.
-enum class CrPreconditioner { block_jacobi, contact_blocks, ssor };
-const char* to_string(CrPreconditioner preconditioner);
-
 struct ContactSolverSettings {
   SolverMethod method = SolverMethod::cr;
   double tolerance = 1e-6;   // epsilon_1 on the (preconditioned) residual; cr/cr_plain: the 2-norm of
@@ -132,8 +91,6 @@ struct ContactSolverSettings {
                                        // the bound on each constraint row's residual at convergence
   int max_relinearizations = 16;       // relinearize calls per solve
   ContactPolicy policy;                // what cr's evaluations add to Algorithms 2 and 3
-  // the preconditioner of `cr` (cr_plain is always C = I).
-  CrPreconditioner preconditioner = CrPreconditioner::block_jacobi;
 };
 
 // What started each Krylov solve of `cr` / `cr_plain` (where the

@@ -85,18 +85,6 @@ Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const MomentumPr
   return w;
 }
 
-Eigen::Matrix3d contact_block(const ContactRows& rows, const MomentumPreconditioner& P) {
-  Eigen::Matrix3d W = Eigen::Matrix3d::Zero();
-  for (size_t i = 0; i < rows.nodes.size(); ++i)
-    W.noalias() += rows.blocks[i] * P.diagonal_inverse(rows.nodes[i]) * rows.blocks[i].transpose();
-  const BodyModeRows modes = rows_times_modes(rows, P);
-  for (size_t slot = 0; slot < static_cast<size_t>(modes.count); ++slot) {
-    const MomentumPreconditioner::ModeBlock& JZ = modes.rows_times_modes[slot];
-    W.noalias() += JZ * P.coarse_inverse(modes.body[slot]) * JZ.transpose();
-  }
-  return W;
-}
-
 NormalRowModes normal_row_modes(const ContactRows& rows, const MomentumPreconditioner& P) {
   const BodyModeRows modes = rows_times_modes(rows, P);
   NormalRowModes out;

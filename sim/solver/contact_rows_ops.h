@@ -46,10 +46,6 @@ class ProblemPreconditioner {
 // touches no free DoF gets 0.
 Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const MomentumPreconditioner& P);
 
-// J_k P_A^-1 J_k^T: the contact's 3x3 block of the Delassus operator with
-// A^-1 replaced by P_A^-1, 1/kg (its diagonal is effective_inverse_mass).
-Eigen::Matrix3d contact_block(const ContactRows& rows, const MomentumPreconditioner& P);
-
 // J_a,n P_A^-1 J_b,n^T: the coupling of two contacts' normal rows through
 // the DoF nodes they share and the rigid motions of the bodies they both
 // touch, 1/kg (0 when they share neither; for a = b it is

@@ -4,11 +4,7 @@
 #include <cmath>
 #include <limits>
 
-#include <Eigen/LU>
-#include <memory>
-
 #include "core/check.h"
-#include "sim/solver/block_ssor.h"
 #include "sim/solver/constraint_evaluation.h"
 #include "sim/solver/cr_best_iterate.h"
 #include "sim/solver/cr_hand_back.h"
@@ -34,10 +30,7 @@ class CrSolver {
            ContactLinearization* linearization, ContactSolverStats& stats)
       : m_problem(problem), m_settings(settings), m_preconditioned(preconditioned),
         m_linearization(linearization), m_stats(stats), m_n(problem.A->rows()),
-        m_P(problem), m_best(problem, m_n, m_P.get()) {
-    if (preconditioned && settings.preconditioner == CrPreconditioner::ssor)
-      m_ssor = std::make_unique<BlockSsor>(*problem.A, m_P.get().diagonal_inverses());
-  }
+        m_P(problem), m_best(problem, m_n, m_P.get()) {}
 
   void run(Eigen::VectorXd& dv);
 
@@ -46,8 +39,7 @@ class CrSolver {
   bool normal_on(int k) const { return m_problem.states[static_cast<size_t>(k)].mode != ContactMode::inactive; }
   bool tangent_on(int k) const { return m_problem.states[static_cast<size_t>(k)].mode == ContactMode::sticking; }
   bool row_on(int k, int r) const { return r == 0 ? normal_on(k) : tangent_on(k); }
-  double row_w(int k, int r) const { return m_tracks[static_cast<size_t>(k)].w[r]; }
-  Eigen::Vector3d compliance(int k) const { return m_problem.softness.compliance(m_tracks[static_cast<size_t>(k)].w); }
+  double row_w(int k, int r) const { return m_inverse_masses[static_cast<size_t>(k)][r]; }
 
   void start_from_warm_states();
   void grow_contacts();
@@ -58,13 +50,13 @@ class CrSolver {
   double scaled_square_sum(const Eigen::VectorXd& r, double stop_above, double& constraint_inf) const;
   double constraint_square_sum(const Eigen::VectorXd& r, double& constraint_inf) const;
   void note_residual_from_z();
-  double scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const;
   double residual_norm(double& constraint_inf);
   void recompute_residual();
   double rounding_floor() const;
   void update_stationary();
   void restart_true();
   void restart(KrylovStart cause);
+  void start_directions();
   void restart_recurrence();
   void rescue_step();
   void restart_after_change(KrylovStart cause);
@@ -82,12 +74,10 @@ class CrSolver {
   int m_n;
   mutable Eigen::VectorXd m_scratch_dv, m_scratch_top;  // apply_B's (and the rounding floor's) work space, #DoF
   ProblemPreconditioner m_P;  // P_A^-1 (momentum_preconditioner.h)
-  std::unique_ptr<BlockSsor> m_ssor;           // P_A^-1 when settings.preconditioner == ssor
-  std::vector<ContactTrack> m_tracks;
-  std::vector<Eigen::Matrix3d> m_contact_inv;  // (J_k P_A^-1 J_k^T)^-1 per contact (zero: use the diagonal)
+  std::vector<Eigen::Vector3d> m_inverse_masses;  // per contact, effective_inverse_mass of its rows
   Eigen::VectorXd m_y, m_d, m_r, m_z, m_p, m_q, m_t, m_bz;
   // Per constraint row (3 #contacts), set with the right-hand side
-  // (build_rhs), whenever states or rows change: what scaled_norm multiplies
+  // (build_rhs), whenever states or rows change: what scaled_square_sum multiplies
   // the row by (1 when selected, its effective inverse mass w otherwise), and
   // what P_S^-1 divides it by (w when selected, 1 otherwise).
   Eigen::VectorXd m_row_scale, m_row_divisor;
@@ -105,7 +95,7 @@ class CrSolver {
 
 void CrSolver::start_from_warm_states() {
   const int m = contacts();
-  m_tracks.assign(static_cast<size_t>(m), ContactTrack{});
+  m_inverse_masses.assign(static_cast<size_t>(m), Eigen::Vector3d::Zero());
   // dv starts at zero (step 3), or where the problem says (start_dv: the
   // contact-free solution of bodies no contact touches). Starting every body
   // from the World's contact-free solution instead was measured on the
@@ -133,26 +123,17 @@ void CrSolver::start_from_warm_states() {
 void CrSolver::grow_contacts() {
   const int m = contacts();
   RECOIL_CHECK(m_problem.states.size() == m_problem.rows.size());
-  const int old = static_cast<int>(m_tracks.size());
+  const int old = static_cast<int>(m_inverse_masses.size());
   RECOIL_CHECK(m >= old);
-  m_tracks.resize(static_cast<size_t>(m));
+  m_inverse_masses.resize(static_cast<size_t>(m), Eigen::Vector3d::Zero());
   m_y.conservativeResize(m_n + 3 * m);
   m_y.tail(3 * (m - old)).setZero();
   for (int k = old; k < m; ++k) m_problem.states[static_cast<size_t>(k)] = ContactState{};
 }
 
 void CrSolver::refresh_rows() {
-  const bool blocks = m_preconditioned && m_settings.preconditioner != CrPreconditioner::block_jacobi;
-  m_contact_inv.assign(blocks ? static_cast<size_t>(contacts()) : 0, Eigen::Matrix3d::Zero());
-  for (int k = 0; k < contacts(); ++k) {
-    const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
-    m_tracks[static_cast<size_t>(k)].w = effective_inverse_mass(rows, m_P.get());
-    if (!blocks) continue;
-    const Eigen::Matrix3d W = contact_block(rows, m_P.get()) + Eigen::Matrix3d(compliance(k).asDiagonal());
-    // Only a well-conditioned block is inverted; the diagonal serves otherwise.
-    if (W.trace() > 0.0 && W.determinant() > 1e-12 * std::pow(W.trace() / 3.0, 3))
-      m_contact_inv[static_cast<size_t>(k)] = W.inverse();
-  }
+  for (size_t k = 0; k < m_inverse_masses.size(); ++k)
+    m_inverse_masses[k] = effective_inverse_mass(m_problem.rows[k], m_P.get());
 }
 
 void CrSolver::build_rhs() {
@@ -167,10 +148,8 @@ void CrSolver::build_rhs() {
       f << 0.0, tangent_impulse(rows, s);
       add_rows_transpose_times(rows, f, m_d);
     }
-    // The compliance's preload (ContactSoftness) moves to the right-hand side.
-    const Eigen::Vector3d preload = compliance(k).cwiseProduct(rows.softness_centre);
-    if (normal_on(k)) m_d[m_n + 3 * k] = -rows.rhs_normal - preload[0];
-    if (tangent_on(k)) m_d.segment<2>(m_n + 3 * k + 1) = -rows.rhs_tangent - preload.tail<2>();
+    if (normal_on(k)) m_d[m_n + 3 * k] = -rows.rhs_normal;
+    if (tangent_on(k)) m_d.segment<2>(m_n + 3 * k + 1) = -rows.rhs_tangent;
   }
   // The per-row factors follow the states here, as the right-hand side does
   // (and the residual's norm, which reads them, is stale).
@@ -181,7 +160,7 @@ void CrSolver::build_rhs() {
     for (int r = 0; r < 3; ++r) {
       const double w = row_w(k, r);
       m_row_scale[3 * k + r] = row_on(k, r) || w <= 0.0 ? 1.0 : w;
-      m_row_divisor[3 * k + r] = row_on(k, r) && w > 0.0 ? w + compliance(k)[r] : 1.0;
+      m_row_divisor[3 * k + r] = row_on(k, r) && w > 0.0 ? w : 1.0;
     }
 }
 
@@ -201,10 +180,10 @@ void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
     if (tangent_on(k)) {
       const Eigen::Vector3d f = x.segment<3>(base);
       add_rows_transpose_times(rows, -f, top);
-      out.segment<3>(base) = -rows_times(rows, dv) - compliance(k).cwiseProduct(f);
+      out.segment<3>(base) = -rows_times(rows, dv);
     } else if (normal_on(k)) {
       add_normal_row_transpose_times(rows, -x[base], top);
-      out[base] = -normal_row_times(rows, dv) - compliance(k)[0] * x[base];
+      out[base] = -normal_row_times(rows, dv);
       out.segment<2>(base + 1) = -x.segment<2>(base + 1);
     } else {
       out.segment<3>(base) = -x.segment<3>(base);
@@ -213,32 +192,16 @@ void CrSolver::apply_B(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   out.head(m_n) = top;
 }
 
-// C = diag(P_A, P_S): P_A^-1 of momentum_preconditioner.h
-// (or block SSOR), P_S = J P_A^-1 J^T on selected rows, per row or per
-// contact block (cr_solver.h), 1 on the others (whose B entry is -1). With
-// block SSOR for P_A, P_S still uses momentum_preconditioner.h's P_A^-1:
-// J M^-1 J^T has no cheap form, and that is what the scaled residual uses too.
+// C = diag(P_A, P_S): P_A^-1 of momentum_preconditioner.h, P_S = diag(J P_A^-1 J^T)
+// on selected rows, 1 on the others (whose B entry is -1).
 void CrSolver::apply_Cinv(const Eigen::VectorXd& x, Eigen::VectorXd& out) const {
   out.resize(x.size());
   if (!m_preconditioned) {
     out = x;
     return;
   }
-  if (m_ssor) {
-    Eigen::VectorXd top;
-    m_ssor->apply(x.head(m_n), top);
-    out.head(m_n) = top;
-  } else {
-    m_P.get().apply(x.head(m_n), out.head(m_n));
-  }
-  for (int k = 0; k < contacts(); ++k) {
-    const int base = m_n + 3 * k;
-    if (tangent_on(k) && !m_contact_inv.empty() && m_contact_inv[static_cast<size_t>(k)](0, 0) != 0.0) {
-      out.segment<3>(base) = m_contact_inv[static_cast<size_t>(k)] * x.segment<3>(base);
-      continue;
-    }
-    for (int r = 0; r < 3; ++r) out[base + r] = x[base + r] / m_row_divisor[3 * k + r];
-  }
+  m_P.get().apply(x.head(m_n), out.head(m_n));
+  out.tail(x.size() - m_n) = x.tail(x.size() - m_n).cwiseQuotient(m_row_divisor);
 }
 
 // The residual as velocities (m/s): momentum rows through P_A^-1, selected
@@ -270,25 +233,21 @@ double CrSolver::constraint_square_sum(const Eigen::VectorXd& r, double& constra
 
 // Called where z = C^-1 r has just been made to hold: explicitly after a
 // restart, by the recurrence after a CR step (to rounding; every stop is
-// re-checked on the explicit residual). When C's momentum block is P_A^-1
-// itself, z then holds the momentum rows of the scaled residual, and its
-// norm costs no further application of P_A^-1.
+// re-checked on the explicit residual). Preconditioned, C's momentum block
+// is P_A^-1, so z then holds the momentum rows of the scaled residual, and
+// its norm costs no further application of P_A^-1.
 void CrSolver::note_residual_from_z() {
   m_residual_norm_known = false;
-  if (!m_preconditioned || m_ssor) return;
+  if (!m_preconditioned) return;
   m_residual_norm = std::sqrt(constraint_square_sum(m_r, m_residual_inf) + m_z.head(m_n).squaredNorm());
   m_residual_norm_known = true;
 }
 
-double CrSolver::scaled_norm(const Eigen::VectorXd& r, double& constraint_inf) const {
-  return std::sqrt(scaled_square_sum(r, std::numeric_limits<double>::infinity(), constraint_inf));
-}
-
-// scaled_norm(m_r), kept until m_r changes: the iteration asks for it up to
+// The scaled residual's norm, kept until m_r changes: the iteration asks for it up to
 // three times per step (restart interval, convergence and stationarity tests).
 double CrSolver::residual_norm(double& constraint_inf) {
   if (!m_residual_norm_known) {
-    m_residual_norm = scaled_norm(m_r, m_residual_inf);
+    m_residual_norm = std::sqrt(scaled_square_sum(m_r, std::numeric_limits<double>::infinity(), m_residual_inf));
     m_residual_norm_known = true;
   }
   constraint_inf = m_residual_inf;
@@ -346,7 +305,8 @@ void CrSolver::count_iteration() {
   ++m_stats.start_iterations[static_cast<size_t>(m_start)];
 }
 
-void CrSolver::restart_recurrence() {
+// Search directions from the current residual: z = C^-1 r, p = z, q = B z.
+void CrSolver::start_directions() {
   apply_Cinv(m_r, m_z);
   note_residual_from_z();
   m_p = m_z;
@@ -355,6 +315,10 @@ void CrSolver::restart_recurrence() {
   m_rho = m_z.dot(m_bz);
   m_since_restart = 0;
   update_stationary();
+}
+
+void CrSolver::restart_recurrence() {
+  start_directions();
   // A stationary residual is final (run() stops on it): z^T B z ~ 0 is then
   // expected, and a rescue step would only move y off the explicit residual,
   // so that the next recheck restarts again, to the end of the budget.
@@ -379,13 +343,7 @@ void CrSolver::rescue_step() {
   m_r -= alpha * bdir;
   m_residual_true = false;
   count_iteration();
-  apply_Cinv(m_r, m_z);
-  note_residual_from_z();
-  m_p = m_z;
-  apply_B(m_z, m_bz);
-  m_q = m_bz;
-  m_rho = m_z.dot(m_bz);
-  update_stationary();
+  start_directions();
 }
 
 // The active set, the friction state or the rows changed: the right-hand
@@ -422,7 +380,7 @@ bool CrSolver::step() {
     const double decades = res > m_settings.tolerance ? std::log10(res / m_settings.tolerance) : 0.0;
     const int interval = std::max(1, static_cast<int>(std::floor(decades * decades / 2.0)));
     if (m_since_restart % interval == 0 &&
-        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), m_settings, false)
+        evaluate_constraints(m_problem, m_inverse_masses, m_y, m_P.get(), m_settings, false)
                 .total() > 0) {
       restart_after_change(KrylovStart::contact_switch);
       return false;
@@ -461,7 +419,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   const bool meets_laws = m_best.offer(m_y) <= eps2;
   if (!meets_laws) {
     const EvaluationChanges changes =
-        evaluate_constraints(m_problem, m_tracks, m_y, m_P.get(), m_settings, true, &m_acceleration);
+        evaluate_constraints(m_problem, m_inverse_masses, m_y, m_P.get(), m_settings, true, &m_acceleration);
     if (changes.total() > 0) {
       restart_after_change(changes.mode_changes > 0 ? KrylovStart::mode_change : KrylovStart::friction_update);
       return Finish::go_on;
@@ -482,7 +440,7 @@ CrSolver::Finish CrSolver::finish_or_continue() {
   if (m_stats.relinearizations >= m_settings.max_relinearizations) return Finish::not_converged;
   const double change = m_linearization->relinearize(dv, m_problem);
   ++m_stats.relinearizations;
-  RECOIL_CHECK(m_problem.rows.size() == m_tracks.size(), "relinearize must not add contacts");
+  RECOIL_CHECK(m_problem.rows.size() == m_inverse_masses.size(), "relinearize must not add contacts");
   m_relinearized_ok = change <= eps2;
   // The normals and tangents may have turned even when the right-hand sides
   // barely moved: solve again on the recomputed residual before returning.

@@ -47,11 +47,8 @@ KktResidual kkt_residual(const ContactProblem& problem, const Eigen::VectorXd& d
     const Eigen::Vector3d w = effective_inverse_mass(rows, P);
     const double w_t = std::max(w[1], w[2]);
     const Eigen::Vector3d jdv = rows_times(rows, dv);
-    // An active contact's rows yield by their compliance (ContactSoftness).
-    const Eigen::Vector3d yield = problem.softness.yield(w, Eigen::Vector3d(s.lambda, s.gamma[0], s.gamma[1]), rows);
-    const double slack = jdv[0] + (s.mode == ContactMode::inactive ? 0.0 : yield[0]) - rows.rhs_normal;
-    Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
-    if (s.mode == ContactMode::sticking) u += yield.tail<2>();
+    const double slack = jdv[0] - rows.rhs_normal;
+    const Eigen::Vector2d u = jdv.tail<2>() - rows.rhs_tangent;
     if (!rows.nodes.empty()) out.penetration = std::max(out.penetration, -slack);
     if (s.mode == ContactMode::inactive) continue;
     Eigen::Vector3d f;

@@ -17,7 +17,7 @@ class PgsSolver {
   PgsSolver(ContactProblem& problem, const ContactSolverSettings& settings, ContactLinearization* linearization,
             ContactSolverStats& stats)
       : m_problem(problem), m_settings(settings), m_linearization(linearization), m_stats(stats),
-        m_n(problem.A->rows()), m_P(problem) {
+        m_n(problem.A->rows()) {
     m_ldlt.compute(problem.A->to_eigen());
     RECOIL_CHECK(m_ldlt.info() == Eigen::Success, "A is not SPD");
     m_dv_free = m_ldlt.solve(problem.b);
@@ -38,8 +38,6 @@ class PgsSolver {
   int m_n;
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> m_ldlt;
   Eigen::VectorXd m_dv_free;  // A^-1 b
-  ProblemPreconditioner m_P;  // P_A^-1: the metric of the rows' compliance
-  std::vector<Eigen::Vector3d> m_compliance;  // per contact, 1/kg (ContactSoftness), set with the operator
   Eigen::MatrixXd m_G;        // #DoF by 3 #contacts: A^-1 J^T
   Eigen::MatrixXd m_W;        // 3 #contacts square: J A^-1 J^T
   Eigen::VectorXd m_f;        // impulses (lambda, gamma) per contact
@@ -60,10 +58,6 @@ void PgsSolver::build_operator() {
     const Eigen::VectorXd column = m_G.col(c);
     for (int k = 0; k < m; ++k) m_W.block<3, 1>(3 * k, c) = rows_times(m_problem.rows[static_cast<size_t>(k)], column);
   }
-  m_compliance.resize(static_cast<size_t>(m));
-  for (int k = 0; k < m; ++k)
-    m_compliance[static_cast<size_t>(k)] =
-        m_problem.softness.compliance(effective_inverse_mass(m_problem.rows[static_cast<size_t>(k)], m_P.get()));
   m_u.resize(3 * m);
   for (int k = 0; k < m; ++k) m_u.segment<3>(3 * k) = rows_times(m_problem.rows[static_cast<size_t>(k)], m_dv_free);
   m_u.noalias() += m_W * m_f;
@@ -79,12 +73,9 @@ double PgsSolver::sweep() {
     const Eigen::Matrix3d Wkk = m_W.block<3, 3>(3 * k, 3 * k);
     if (!(Wkk(0, 0) > 0.0)) continue;
     const Eigen::Vector3d old = m_f.segment<3>(3 * k);
-    // The rows' compliance (ContactSoftness) adds to their diagonal.
-    const Eigen::Vector3d& c = m_compliance[static_cast<size_t>(k)];
-    Eigen::Vector3d u = m_u.segment<3>(3 * k) + c.cwiseProduct(old - rows.softness_centre);
-    const double lambda = std::max(0.0, old[0] - (u[0] - rows.rhs_normal) / (Wkk(0, 0) + c[0]));
+    Eigen::Vector3d u = m_u.segment<3>(3 * k);
+    const double lambda = std::max(0.0, old[0] - (u[0] - rows.rhs_normal) / Wkk(0, 0));
     u += Wkk.col(0) * (lambda - old[0]);
-    u[0] += c[0] * (lambda - old[0]);
     Eigen::Vector2d gamma = Eigen::Vector2d::Zero();
     const double radius = rows.mu_kinetic * lambda;
     if (radius > 0.0) {
@@ -93,8 +84,7 @@ double PgsSolver::sweep() {
       // (maximal dissipation); a matrix step would skew the direction.
       const Eigen::Matrix2d Wtt = Wkk.bottomRightCorner<2, 2>();
       const double top = Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d>(Wtt, Eigen::EigenvaluesOnly).eigenvalues()[1];
-      const double yield = std::max(c[1], c[2]);
-      if (top > 0.0) gamma = old.tail<2>() - (u.tail<2>() - rows.rhs_tangent) / (top + yield);
+      if (top > 0.0) gamma = old.tail<2>() - (u.tail<2>() - rows.rhs_tangent) / top;
       const double norm = gamma.norm();
       if (norm > radius) gamma *= radius / norm;
     }

@@ -20,15 +20,6 @@ const char* to_string(SolverMethod method) {
   return "unknown";
 }
 
-const char* to_string(CrPreconditioner preconditioner) {
-  switch (preconditioner) {
-    case CrPreconditioner::block_jacobi: return "block_jacobi";
-    case CrPreconditioner::contact_blocks: return "contact_blocks";
-    case CrPreconditioner::ssor: return "ssor";
-  }
-  return "unknown";
-}
-
 const char* to_string(KrylovStart start) {
   switch (start) {
     case KrylovStart::first_solve: return "first solve";
@@ -55,13 +46,6 @@ ContactSolverStats solve_contacts(ContactProblem& problem, const ContactSolverSe
     for (size_t i = 0; i < rows.nodes.size(); ++i)
       RECOIL_CHECK(rows.nodes[i] >= 0 && rows.nodes[i] < problem.A->block_rows() && (i == 0 || rows.nodes[i - 1] < rows.nodes[i]),
                    "contact node " << rows.nodes[i]);
-  }
-  // The rows' compliance is measured from the warm start (ContactSoftness).
-  for (size_t k = 0; k < problem.rows.size(); ++k) {
-    const ContactState& s = problem.states[k];
-    problem.rows[k].softness_centre.setZero();
-    if (s.mode != ContactMode::inactive)
-      problem.rows[k].softness_centre << std::max(s.lambda, 0.0), tangent_impulse(problem.rows[k], s);
   }
   const auto start = std::chrono::steady_clock::now();
   ContactSolverStats stats;

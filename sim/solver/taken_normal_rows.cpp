@@ -4,16 +4,16 @@
 
 namespace recoil::sim {
 
-TakenNormalRows::TakenNormalRows(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
+TakenNormalRows::TakenNormalRows(const ContactProblem& problem, const std::vector<Eigen::Vector3d>& inverse_masses,
                                  const MomentumPreconditioner& P, double cosine)
-    : m_problem(problem), m_tracks(tracks), m_P(P), m_cosine(cosine),
+    : m_problem(problem), m_inverse_masses(inverse_masses), m_P(P), m_cosine(cosine),
       m_modes(problem.rows.size()), m_measured(problem.rows.size(), 0) {}
 
 const TakenNormalRows::Modes& TakenNormalRows::modes(int k) {
   Modes& out = m_modes[static_cast<size_t>(k)];
   if (out.share < 0.0) {
     out.modes = normal_row_modes(m_problem.rows[static_cast<size_t>(k)], m_P);
-    const double w = m_tracks[static_cast<size_t>(k)].w[0];
+    const double w = m_inverse_masses[static_cast<size_t>(k)][0];
     out.share = w > 0.0 ? std::sqrt(normal_row_rigid_part(out.modes, m_P) / w) : 0.0;
   }
   return out;
@@ -23,8 +23,8 @@ bool TakenNormalRows::measure(int k, int t) {
   int& last = m_measured[static_cast<size_t>(t)];
   if (last == m_proposal) return false;
   last = m_proposal;
-  const double w_k = m_tracks[static_cast<size_t>(k)].w[0];
-  const double w_t = m_tracks[static_cast<size_t>(t)].w[0];
+  const double w_k = m_inverse_masses[static_cast<size_t>(k)][0];
+  const double w_t = m_inverse_masses[static_cast<size_t>(t)][0];
   if (!(w_k > 0.0 && w_t > 0.0)) return false;
   const double product = normal_rows_product(m_problem.rows[static_cast<size_t>(k)], modes(k).modes,
                                              m_problem.rows[static_cast<size_t>(t)], modes(t).modes, m_P);

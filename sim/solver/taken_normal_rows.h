@@ -21,8 +21,8 @@ namespace recoil::sim {
 
 class TakenNormalRows {
  public:
-  // cosine: ContactPolicy::parallel; tracks: the rows' effective inverse masses.
-  TakenNormalRows(const ContactProblem& problem, const std::vector<ContactTrack>& tracks,
+  // cosine: ContactPolicy::parallel; inverse_masses: per contact, effective_inverse_mass.
+  TakenNormalRows(const ContactProblem& problem, const std::vector<Eigen::Vector3d>& inverse_masses,
                   const MomentumPreconditioner& P, double cosine);
 
   // Whether contact k's normal row has a cosine above `cosine` with a taken row.
@@ -39,7 +39,7 @@ class TakenNormalRows {
   bool measure(int k, int t);  // the exact test for one pair, each pair once per proposal
 
   const ContactProblem& m_problem;
-  const std::vector<ContactTrack>& m_tracks;
+  const std::vector<Eigen::Vector3d>& m_inverse_masses;
   const MomentumPreconditioner& m_P;
   double m_cosine;
   std::unordered_map<int, std::vector<int>> m_by_node;  // DoF node -> taken contacts touching it

@@ -46,14 +46,14 @@ TEST(TakenNormalRows, DecidesAsMeasuringEveryPair) {
     }
     const ContactProblem& problem = owned.problem;
     const int m = static_cast<int>(problem.rows.size());
-    std::vector<ContactTrack> tracks(static_cast<size_t>(m));
-    for (int k = 0; k < m; ++k) tracks[static_cast<size_t>(k)].w = effective_inverse_mass(problem.rows[k], P);
-    TakenNormalRows taken(problem, tracks, P, kCosine);
+    std::vector<Eigen::Vector3d> inverse_masses;
+    for (int k = 0; k < m; ++k) inverse_masses.push_back(effective_inverse_mass(problem.rows[k], P));
+    TakenNormalRows taken(problem, inverse_masses, P, kCosine);
     std::vector<int> taken_list;
     for (int k = 0; k < m; ++k) {
       bool parallel = false, through_shared_node = false;
       for (int t : taken_list) {
-        const double w_k = tracks[static_cast<size_t>(k)].w[0], w_t = tracks[static_cast<size_t>(t)].w[0];
+        const double w_k = inverse_masses[static_cast<size_t>(k)][0], w_t = inverse_masses[static_cast<size_t>(t)][0];
         if (normal_rows_product(problem.rows[k], problem.rows[t], P) > kCosine * std::sqrt(w_k * w_t)) {
           parallel = true;
           const auto& a = problem.rows[k].nodes;
