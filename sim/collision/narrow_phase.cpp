@@ -118,6 +118,28 @@ double edge_bend(const PreparedSurface& s, int edge) {
   return std::max(std::abs(n_forward.dot(point_at(x, opposite[1]) - lo)), std::abs(n_back.dot(point_at(x, opposite[0]) - lo)));
 }
 
+// Whether the triangles around vertex v lie within `tolerance` (m) of one
+// plane at x0, measured as edge_bend does: every vertex of each triangle of
+// the ring within `tolerance` of every other one's plane.
+bool flat_vertex(const PreparedSurface& s, int v, double tolerance) {
+  const Triangles& tri = s.surface->triangles;
+  const Points& x = s.surface->x0;
+  const VertexFaces& around = *s.vertex_faces;
+  const int first = around.start[static_cast<size_t>(v)], last = around.start[static_cast<size_t>(v) + 1];
+  for (int i = first; i < last; ++i) {
+    const int f = around.faces[static_cast<size_t>(i)];
+    const Eigen::Vector3d n = face_normal(point_at(x, tri(f, 0)), point_at(x, tri(f, 1)), point_at(x, tri(f, 2)));
+    if (n.isZero()) return false;
+    const Eigen::Vector3d unit = n.normalized(), origin = point_at(x, v);
+    for (int j = first; j < last; ++j)
+      for (int k = 0; k < 3; ++k) {
+        const int w = tri(around.faces[static_cast<size_t>(j)], k);
+        if (std::abs(unit.dot(point_at(x, w) - origin)) > tolerance) return false;
+      }
+  }
+  return last > first;
+}
+
 // Whether direction d (unit) leaves the surface across `edge` into its
 // inside: below both its triangles' planes (counter-clockwise from outside),
 // d . n below -kInsideCosine for each. Needs a closed surface's edge.
@@ -346,7 +368,12 @@ ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const P
   const std::vector<Eigen::Vector3d>& generators_b = scratch.generators_b;
   const std::vector<Eigen::Vector3d>& generators_a = scratch.generators_a;
   std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, generators_b, generators_a);
-  if (c.toi && !chosen) chosen = impact_cone_normal(aim, generators_b, sep0, margin);
+  // A flat vertex (its ring within margin/10 of one plane) that faces none
+  // of the feature's faces adds nothing: B has crossed that plane to reach
+  // it, and B's own vertices and bent edges against A's faces hold that
+  // crossing, as for a flat edge (narrow_phase.h).
+  if (c.toi && !chosen && !flat_vertex(a, vertex, kFeatureSnapShare * margin))
+    chosen = impact_cone_normal(aim, generators_b, sep0, margin);
   if (!chosen) return ConeVerdict::no_contact;
   // An impact on a face that p started behind is its way out of B after
   // crossing another face first, which that crossing holds.

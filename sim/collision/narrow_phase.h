@@ -64,8 +64,13 @@
 // lies in both features' normal cones, else the qualifying face normal
 // nearest it, else no candidate; at an impact, also no candidate on a face p
 // started behind, and a vertex facing none of the faces is held by one it
-// started more than a margin in front of; a fallback normal of another face
-// that p lies over is left to that face's own pair. The rest of this
+// started more than a margin in front of, unless it is flat (its triangles
+// within margin/10 of one plane: B crossed that plane to reach it, and B's
+// vertices and bent edges against A's faces hold the crossing, as for a flat
+// edge; a block sliding on a box floor was otherwise held against its front
+// face by floor lattice vertices that the contact-free prediction, falling
+// into the floor, let the continuous check meet there); a fallback normal of
+// another face that p lies over is left to that face's own pair. The rest of this
 // paragraph is the rule for every other pair, and for a closed pair whose
 // triangles round a feature are all degenerate.
 // Normal (from q on B to p on A): (p - q)/|p - q| while the points are apart
