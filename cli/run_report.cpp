@@ -28,7 +28,7 @@ RunReport::RunReport(const RunJob& job, const SceneDesc& scene) {
             {"resume", job.resume}};
 }
 
-void RunReport::add_step(const sim::StepReport& r) {
+void RunReport::add_step(const sim::StepReport& r, int frame) {
   timings.step += r.profile.total;
   timings.assemble += r.profile.assemble;
   timings.collision += r.profile.collide;
@@ -39,14 +39,14 @@ void RunReport::add_step(const sim::StepReport& r) {
   m_restarts += r.solver_restarts;
   m_contacts += r.contacts;
   ++m_steps;
-  if (!r.solver_converged) ++m_not_converged;
+  if (!r.solver_converged && m_not_converged++ == 0) m_first_unconverged_frame = frame;
   m_worst_kkt = std::max(m_worst_kkt, r.solver_kkt);
   m_max_residual = std::max(m_max_residual, r.solver_residual);
   m_max_penetration = std::max(m_max_penetration, r.max_penetration);
 }
 
 SolveQuality RunReport::solve_quality(double margin) const {
-  return {m_steps, m_not_converged, m_worst_kkt, m_max_penetration, margin};
+  return {m_steps, m_not_converged, m_first_unconverged_frame, m_worst_kkt, m_max_penetration, margin};
 }
 
 void RunReport::add_frame(const FrameTimes& times) { timings.render += times.render; }
@@ -81,6 +81,7 @@ void RunReport::finish(const sim::World& world, const RunResult& result, double 
               {"open_meshes", result.open_meshes},
               {"look", result.look_warnings},
               {"not_converged_steps", result.quality.not_converged},
+              {"first_unconverged_frame", result.quality.first_unconverged_frame},
               {"worst_kkt", result.quality.worst_kkt},
               {"max_penetration", result.quality.max_penetration},
               {"margin", result.quality.margin}}},

@@ -15,7 +15,8 @@ struct RunResult;
 // warns about and --strict fails on.
 struct SolveQuality {
   long steps = 0;
-  long not_converged = 0;          // steps whose solve stopped at its iteration cap
+  long not_converged = 0;          // steps whose solve ended above its tolerance (at its cap, or stalled)
+  int first_unconverged_frame = -1;  // the frame whose steps held the first of them (0: settling; -1: none)
   double worst_kkt = 0.0;          // largest KKT residual of a returned solution, m/s
   double max_penetration = 0.0;    // m
   double margin = 0.0;             // the scene's contact margin, m
@@ -33,7 +34,8 @@ class RunReport {
   };
 
   RunReport(const RunJob& job, const SceneDesc& scene);
-  void add_step(const sim::StepReport& report);
+  // `frame`: the frame being stepped towards (0 while settling).
+  void add_step(const sim::StepReport& report, int frame);
   void add_frame(const FrameTimes& times);
   // The OpenGL backend that drew the frames and its GL_RENDERER string.
   void set_gl(const std::string& backend, const std::string& renderer);
@@ -47,6 +49,7 @@ class RunReport {
  private:
   nlohmann::json m_head;
   long m_steps = 0, m_iterations = 0, m_restarts = 0, m_contacts = 0, m_not_converged = 0;
+  int m_first_unconverged_frame = -1;
   double m_max_residual = 0.0, m_max_penetration = 0.0, m_worst_kkt = 0.0;
   nlohmann::json m_tail;
 };

@@ -105,8 +105,9 @@ std::string describe_warnings(const SolveQuality& q) {
   std::ostringstream s;
   s.precision(2);
   if (q.not_converged > 0)
-    s << q.not_converged << " of " << q.steps << " solves did not converge (worst KKT residual " << std::scientific
-      << q.worst_kkt << std::defaultfloat << " m/s)";
+    s << q.not_converged << " of " << q.steps << " solves did not converge, the first "
+      << (q.first_unconverged_frame > 0 ? "at frame " + std::to_string(q.first_unconverged_frame) : "while settling")
+      << " (worst KKT residual " << std::scientific << q.worst_kkt << std::defaultfloat << " m/s)";
   if (q.penetrated_margin())
     s << (q.not_converged > 0 ? "; " : "") << "largest penetration " << std::fixed << q.max_penetration * 1e3
       << " mm, beyond the " << q.margin * 1e3 << " mm contact margin";
@@ -292,7 +293,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   auto advance = [&](FrameAccumulator& acc, int frame) {
     const sim::StepReport r = world->step();
     acc.add(r);
-    report.add_step(r);
+    report.add_step(r, frame);
     if (r.status == sim::StepStatus::inverted) ++inverted_steps;
     else if (r.status == sim::StepStatus::ok) inverted_steps = 0;
     if (r.status == sim::StepStatus::nan || r.status == sim::StepStatus::energy_blowup ||

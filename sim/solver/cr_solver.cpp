@@ -474,7 +474,10 @@ void CrSolver::run(Eigen::VectorXd& dv) {
     if (small || m_stationary) {
       const Finish finish = finish_or_continue();
       if (finish == Finish::go_on) continue;
-      m_stats.converged = finish == Finish::converged;
+      // A stationary residual above epsilon_1 is as near as CR gets to this
+      // system (rows whose right-hand sides disagree): the solve ends there,
+      // unconverged, and hands back its best iterate.
+      m_stats.converged = finish == Finish::converged && below;
       break;
     }
     // In exact arithmetic CR ends within as many iterations as B has rows; a

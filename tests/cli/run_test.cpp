@@ -358,10 +358,13 @@ TEST(RunCommand, UnconvergedSolvesAreReportedAndStrictFailsOnThem) {
   const CommandResult lenient = run_recoil("run " + shell_quote(scene) + " -q --no-render -o " + shell_quote(dir / "lenient"));
   EXPECT_EQ(lenient.exit_code, 0) << lenient.err;
   EXPECT_NE(lenient.err.find("warning: "), std::string::npos) << lenient.err;
-  EXPECT_NE(lenient.err.find(" solves did not converge (worst KKT residual "), std::string::npos) << lenient.err;
+  EXPECT_NE(lenient.err.find(" solves did not converge, the first at frame "), std::string::npos) << lenient.err;
+  EXPECT_NE(lenient.err.find(" (worst KKT residual "), std::string::npos) << lenient.err;
   const json run = json::parse(file_bytes(dir / "lenient" / "run.json"));
   EXPECT_GT(run["warnings"]["not_converged_steps"].get<int>(), 0);
   EXPECT_GT(run["warnings"]["worst_kkt"].get<double>(), 0.0);
+  // Dropped 1 cm, the box lands at t = 0.045 s: among frame 2's steps (10 fps, dt 10 ms).
+  EXPECT_EQ(run["warnings"]["first_unconverged_frame"].get<int>(), 2);
   EXPECT_EQ(run["exit"]["code"], 0);
 
   const fs::path out = dir / "strict";

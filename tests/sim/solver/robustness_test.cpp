@@ -104,7 +104,8 @@ TEST(SolverRobustness, APulledContactIsLetGo) {
 // Two sticking contacts on one particle with the same frame but tangential
 // right-hand sides 1e-7 m/s apart: B is singular and d is not in its range,
 // so the residual cannot drop below ~5e-8 m/s. Tolerance 1e-11: without the
-// |B C^-1 r| exit the solver would iterate to the cap.
+// |B C^-1 r| exit the solver would iterate to the cap. It stops at the
+// least-squares compromise, above its tolerance: unconverged.
 TEST(SolverRobustness, StationaryResidualStopsEarly) {
   for (SolverMethod method : {SolverMethod::cr, SolverMethod::cr_plain}) {
     OwnedProblem owned = particle_on_incline(1.0, 0.0, kG, kH, Eigen::Vector2d::Zero(), 1e6, 1e6);
@@ -120,7 +121,7 @@ TEST(SolverRobustness, StationaryResidualStopsEarly) {
     std::cout << to_string(method) << ": inconsistent sticking rows: iterations " << s.stats.iterations
               << ", restarts " << s.stats.restarts << ", residual " << s.stats.residual << ", dv_y " << s.dv[1]
               << ", lambdas " << s.states[0].lambda << " " << s.states[1].lambda << "\n";
-    EXPECT_TRUE(s.stats.converged) << to_string(method);
+    EXPECT_FALSE(s.stats.converged) << to_string(method);
     EXPECT_LT(s.stats.iterations + s.stats.restarts, 200) << to_string(method);
     EXPECT_NEAR(s.dv[1], 0.5e-7, 1e-9) << to_string(method) << ": the least-squares compromise";
     EXPECT_NEAR(s.states[0].lambda + s.states[1].lambda, kH * kG, 1e-9) << to_string(method);
@@ -134,6 +135,7 @@ TEST(SolverRobustness, StationaryResidualStopsEarly) {
 // left is in B's null space: each restart finds z^T B z ~ 0, and a
 // minimal-residual step from there moved the iterate off the explicit
 // residual, so that every recheck restarted again until the budget ran out.
+// It stops early, above its tolerance: unconverged.
 TEST(SolverRobustness, ARigidBodysStationaryResidualStopsEarly) {
   constexpr double kMass = 3.0, kApart = 1e-4;  // kg, m/s
   for (SolverMethod method : {SolverMethod::cr, SolverMethod::cr_plain}) {
@@ -151,7 +153,7 @@ TEST(SolverRobustness, ARigidBodysStationaryResidualStopsEarly) {
     std::cout << to_string(method) << ": rigid box, inconsistent sticking corners: iterations " << s.stats.iterations
               << ", restarts " << s.stats.restarts << ", kkt " << s.stats.kkt << ", |dv|_inf "
               << s.dv.lpNorm<Eigen::Infinity>() << "\n";
-    EXPECT_TRUE(s.stats.converged) << to_string(method);
+    EXPECT_FALSE(s.stats.converged) << to_string(method);
     EXPECT_LT(s.stats.iterations + s.stats.restarts, 100) << to_string(method);
     EXPECT_NEAR(lambda_sum, kMass * kG * kH, 1e-9) << to_string(method) << ": the normal rows are consistent";
     for (size_t k = 0; k < owned.problem.rows.size(); ++k) {
