@@ -34,6 +34,18 @@ void FrameAccumulator::add(const sim::StepReport& r) {
   solve_ms += r.profile.solve;
 }
 
+std::vector<sim::BodyStats> bodies_at(double time, const std::vector<sim::BodyStats>& before,
+                                      const std::vector<sim::BodyStats>& after, double after_time, double dt) {
+  std::vector<sim::BodyStats> out = after;
+  if (before.size() != after.size() || !(dt > 0.0)) return out;
+  const double share = (time - (after_time - dt)) / dt;  // 0 at `before`, 1 at `after`
+  for (size_t i = 0; i < out.size(); ++i) {
+    out[i].center_of_mass = before[i].center_of_mass + share * (after[i].center_of_mass - before[i].center_of_mass);
+    out[i].momentum = before[i].momentum + share * (after[i].momentum - before[i].momentum);
+  }
+  return out;
+}
+
 nlohmann::json frame_stats_json(int frame, double time, double sim_time, const FrameAccumulator& a,
                                 const std::vector<sim::BodyStats>& stats, const SceneDesc& scene,
                                 const FrameTimes& times) {

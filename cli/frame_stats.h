@@ -28,6 +28,15 @@ struct FrameTimes {
   double encode = 0.0;  // encoding finished on the worker threads since the previous frame
 };
 
+// The bodies' state at simulated time `time`, which lies within a step of
+// the last one taken: centres of mass and momenta linear between `before`
+// (World::stats() one step earlier) and `after` (now, at `after_time`;
+// `dt` apart), energies and volume ratios as `after` has them. A frame falls
+// between steps when 1 / fps is no multiple of dt, and the frame's stats
+// report it at its own time. `before` empty: `after` as it is.
+std::vector<sim::BodyStats> bodies_at(double time, const std::vector<sim::BodyStats>& before,
+                                      const std::vector<sim::BodyStats>& after, double after_time, double dt);
+
 // The stats.jsonl object of frame `frame` at `time` (= (frame - 1) / fps);
 // `stats` from World::stats(), reordered to the scene order of `scene`.
 nlohmann::json frame_stats_json(int frame, double time, double sim_time, const FrameAccumulator& steps,

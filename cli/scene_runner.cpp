@@ -338,6 +338,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
     result.settle_time = world->time();
   }
   const long first_step = world->counters().steps;
+  const double first_time = world->time();  // frame 1's simulated time
   // The view frames what the first frame shows: the settled scene.
   if (job.render)
     view = std::make_unique<SceneView>(scene, world->surfaces(), static_cast<double>(settings.width) / settings.height);
@@ -347,7 +348,10 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   for (int k = 1; k <= last_frame && !result.failed && !pending_interrupt(); ++k) {
     FrameAccumulator acc = k == 1 ? settling : FrameAccumulator{};
     const long target = first_step + frame_step(k, fps, dt);
-    while (world->counters().steps < target && !pending_interrupt() && advance(acc, k)) {
+    std::vector<sim::BodyStats> before;  // the bodies a step before the frame's state, for its stats
+    while (world->counters().steps < target && !pending_interrupt()) {
+      if (world->counters().steps + 1 == target) before = world->stats();
+      if (!advance(acc, k)) break;
     }
     if (result.failed || pending_interrupt()) break;
     if (view) view->track(world->body_bounds());
@@ -376,7 +380,9 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
       encoded_before = writer->encode_ms();
     }
     report.add_frame(times);
-    stats_out << frame_stats_json(k, (k - 1) / fps, world->time(), acc, world->stats(), scene, times).dump() << "\n";
+    const std::vector<sim::BodyStats> bodies =
+        bodies_at(first_time + (k - 1) / fps, before, world->stats(), world->time(), dt);
+    stats_out << frame_stats_json(k, (k - 1) / fps, world->time(), acc, bodies, scene, times).dump() << "\n";
     errno = 0;
     stats_out.flush();
     if (!stats_out) throw output_error("cannot write " + stats_path.string() + ": " + errno_message(errno));
