@@ -1,18 +1,12 @@
 #pragma once
 // The iterate closest to a solution that a CR solve (cr_solver.h) has met,
-// handed back when the solve ends unconverged. At the iteration cap (or the
-// cap on re-linearisations) y is wherever the last restart left it: mid-way
-// through a Krylov solve for an active set that the next evaluation may have
-// changed again (a cube landing on another: KKT residuals of 0.1-13 m/s at
-// the cap; a soft FEM cube at rest, capped at 95 iterations: 0.012 m/s worse
-// than a state solved before). Candidates are the warm start, every solved
-// iterate and every restart's iterate, for a capped solve may never solve a
-// system between its mid-solve switches (a dough ball between faceted
-// rollers, 120 steps: 4.7 m/s from the laws at worst with solved iterates
-// only, 0.49 with these). The KKT
-// residual counts the momentum error, so an unsolved iterate is measured as
-// honestly as a solved one; all are measured on the rows as they are now
-// (re-linearisation may move them).
+// handed back when the solve ends unconverged: at the cap, y is wherever the
+// last restart left it, mid-way through a Krylov solve for an active set the
+// next evaluation may change again. Candidates are the warm start, every
+// solved iterate and every restart's iterate (a capped solve may never solve
+// a system between its mid-solve switches), measured by the KKT residual,
+// which counts the momentum error too, on the rows as they are now
+// (docs/decisions/019-capped-solve-hand-back.md has the measurements).
 #include <Eigen/Core>
 #include <limits>
 #include <vector>

@@ -475,8 +475,7 @@ void CrSolver::run(Eigen::VectorXd& dv) {
       const Finish finish = finish_or_continue();
       if (finish == Finish::go_on) continue;
       // A stationary residual above epsilon_1 is as near as CR gets to this
-      // system (rows whose right-hand sides disagree): the solve ends there,
-      // unconverged, and hands back its best iterate.
+      // system (rows whose right-hand sides disagree): it ends unconverged.
       m_stats.converged = finish == Finish::converged && below;
       break;
     }
