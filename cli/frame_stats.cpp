@@ -39,9 +39,13 @@ std::vector<sim::BodyStats> bodies_at(double time, const std::vector<sim::BodySt
   std::vector<sim::BodyStats> out = after;
   if (before.size() != after.size() || !(dt > 0.0)) return out;
   const double share = (time - (after_time - dt)) / dt;  // 0 at `before`, 1 at `after`
+  const auto blend = [share](const auto& a, const auto& b) { return a + share * (b - a); };
   for (size_t i = 0; i < out.size(); ++i) {
-    out[i].center_of_mass = before[i].center_of_mass + share * (after[i].center_of_mass - before[i].center_of_mass);
-    out[i].momentum = before[i].momentum + share * (after[i].momentum - before[i].momentum);
+    out[i].center_of_mass = blend(before[i].center_of_mass, after[i].center_of_mass);
+    out[i].momentum = blend(before[i].momentum, after[i].momentum);
+    out[i].kinetic_energy = blend(before[i].kinetic_energy, after[i].kinetic_energy);
+    out[i].elastic_energy = blend(before[i].elastic_energy, after[i].elastic_energy);
+    out[i].min_volume_ratio = blend(before[i].min_volume_ratio, after[i].min_volume_ratio);
   }
   return out;
 }

@@ -29,11 +29,10 @@ struct FrameTimes {
 };
 
 // The bodies' state at simulated time `time`, which lies within a step of
-// the last one taken: centres of mass and momenta linear between `before`
-// (World::stats() one step earlier) and `after` (now, at `after_time`;
-// `dt` apart), energies and volume ratios as `after` has them. A frame falls
-// between steps when 1 / fps is no multiple of dt, and the frame's stats
-// report it at its own time. `before` empty: `after` as it is.
+// the last one taken: every quantity linear between `before` (World::stats()
+// one step earlier) and `after` (now, at `after_time`; `dt` apart). A frame
+// falls between steps when 1 / fps is no multiple of dt, and the frame's
+// stats report it at its own time. `before` empty: `after` as it is.
 std::vector<sim::BodyStats> bodies_at(double time, const std::vector<sim::BodyStats>& before,
                                       const std::vector<sim::BodyStats>& after, double after_time, double dt);
 
