@@ -18,10 +18,13 @@ void add_render_options(CLI::App& command, RenderOptions& options) {
   command.add_option("--msaa", options.msaa, "Anti-aliasing samples per pixel: 0, 2 or 4 (2 only where the OpenGL driver has it; llvmpipe has 4 only)")
       ->check(CLI::IsMember({0, 2, 4}))->group(group)->capture_default_str();
   command.add_flag("--no-shadows", options.no_shadows, "Skip the key light's shadow (faster)")->group(group);
-  command.add_flag("--ao", options.ambient_occlusion,
-                   "Ambient occlusion: creases, and the floor where a body meets it, darken (a quarter to a "
-                   "third more render time)")
-      ->group(group);
+  CLI::Option* ao = command.add_flag("--ao", options.ambient_occlusion,
+                                     "Ambient occlusion: creases, and the floor where a body meets it, darken (a "
+                                     "quarter to a third more render time)")
+                        ->group(group);
+  command.add_flag("--no-ao", options.no_ambient_occlusion,
+                   "No ambient occlusion (the default; also over a scene file's \"ambient_occlusion\": true)")
+      ->group(group)->excludes(ao);
   command.add_flag("--no-ground", options.no_ground,
                    "Draw no ground (it still holds the bodies up); over --background transparent the ground is "
                    "otherwise a shadow catcher: the shadows alone")
@@ -88,7 +91,7 @@ render::RenderSettings to_render_settings(const RenderOptions& options) {
   settings.shadows = !options.no_shadows;
   settings.ground = !options.no_ground;
   settings.wireframe = options.wireframe;
-  settings.ambient_occlusion = options.ambient_occlusion;
+  settings.ambient_occlusion = options.ambient_occlusion && !options.no_ambient_occlusion;
   if (options.background == "transparent") settings.transparent_background = true;
   else settings.background = parse_color(options.background, "--background");
   if (!kFpsRange.contains(options.fps)) throw bad_input("--fps: must be " + kFpsRange.describe());

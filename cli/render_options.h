@@ -20,6 +20,7 @@ struct RenderOptions {
   std::string background = "#1d2127";   // #rrggbb or "transparent"
   bool wireframe = false;
   bool ambient_occlusion = false;
+  bool no_ambient_occlusion = false;    // --no-ao: off even where a scene file turns it on
   std::string color;                    // #rrggbb, empty: the default palette
   double camera_distance = 0.0;         // metres from the target; 0: fit the scene
   double azimuth = 0.0;                 // degrees about +y from +z (only when given)

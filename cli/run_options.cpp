@@ -29,6 +29,7 @@ void apply_render_overrides(const RunOptions& o, SceneDesc& scene) {
   if (given(o, "--background")) scene.render.background = o.render.background;
   if (given(o, "--wireframe")) scene.render.wireframe = true;
   if (given(o, "--ao")) scene.render.ambient_occlusion = true;
+  if (given(o, "--no-ao")) scene.render.ambient_occlusion = false;
   if (given(o, "--png-level")) scene.render.png_level = o.render.png_level;
   if (given(o, "--gl")) scene.render.gl = o.render.gl;
   if (given(o, "--color")) {

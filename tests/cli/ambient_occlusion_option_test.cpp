@@ -1,5 +1,5 @@
 // --ao reaches the scene written beside the frames, so a rerun of that scene
-// draws the same frame, and it changes what is drawn.
+// draws the same frame, and it changes what is drawn; --no-ao undoes it.
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
@@ -29,6 +29,15 @@ TEST(AmbientOcclusionOption, ReachesTheSceneAndItsRerun) {
                                          shell_quote(dir / "rerun"));
   ASSERT_EQ(rerun.exit_code, 0) << rerun.err;
   EXPECT_EQ(file_bytes(dir / "rerun/frame_0001.png"), file_bytes(dir / "with/frame_0001.png"));
+  // --no-ao turns it off over the scene file, and contradicts --ao.
+  const CommandResult off = run_recoil("run " + shell_quote(dir / "with/scene.json") + " --no-ao --frames 1 -q -o " +
+                                       shell_quote(dir / "off"));
+  ASSERT_EQ(off.exit_code, 0) << off.err;
+  EXPECT_EQ(file_bytes(dir / "off/frame_0001.png"), file_bytes(dir / "without/frame_0001.png"));
+  EXPECT_EQ(nlohmann::json::parse(file_bytes(dir / "off/scene.json"))["render"]["ambient_occlusion"], false);
+  const CommandResult both =
+      run_recoil("turntable " + bunny + " --ao --no-ao --turn-frames 2 -q -o " + shell_quote(dir / "both"));
+  EXPECT_EQ(both.exit_code, 2) << both.err;
 }
 
 }  // namespace
