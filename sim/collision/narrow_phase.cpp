@@ -13,7 +13,6 @@
 namespace recoil::sim {
 namespace {
 
-
 // Distances below this count as touching (metres); relative to the scene's
 // coordinates because that is where double rounding lives.
 double pair_tolerance(const PreparedSurface& a, const PreparedSurface& b) {
@@ -119,23 +118,22 @@ double edge_bend(const PreparedSurface& s, int edge) {
 }
 
 // Whether the triangles around vertex v lie within `tolerance` (m) of one
-// plane at x0, measured as edge_bend does: every vertex of each triangle of
-// the ring within `tolerance` of every other one's plane.
+// plane at x0, as edge_bend measures it: each ring vertex off each ring plane.
 bool flat_vertex(const PreparedSurface& s, int v, double tolerance) {
   const Triangles& tri = s.surface->triangles;
   const Points& x = s.surface->x0;
   const VertexFaces& around = *s.vertex_faces;
   const int first = around.start[static_cast<size_t>(v)], last = around.start[static_cast<size_t>(v) + 1];
+  const Eigen::Vector3d origin = point_at(x, v);
   for (int i = first; i < last; ++i) {
     const int f = around.faces[static_cast<size_t>(i)];
     const Eigen::Vector3d n = face_normal(point_at(x, tri(f, 0)), point_at(x, tri(f, 1)), point_at(x, tri(f, 2)));
     if (n.isZero()) return false;
-    const Eigen::Vector3d unit = n.normalized(), origin = point_at(x, v);
+    const Eigen::Vector3d unit = n.normalized();
     for (int j = first; j < last; ++j)
-      for (int k = 0; k < 3; ++k) {
-        const int w = tri(around.faces[static_cast<size_t>(j)], k);
-        if (std::abs(unit.dot(point_at(x, w) - origin)) > tolerance) return false;
-      }
+      for (int k = 0; k < 3; ++k)
+        if (std::abs(unit.dot(point_at(x, tri(around.faces[static_cast<size_t>(j)], k)) - origin)) > tolerance)
+          return false;
   }
   return last > first;
 }
@@ -368,10 +366,7 @@ ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const P
   const std::vector<Eigen::Vector3d>& generators_b = scratch.generators_b;
   const std::vector<Eigen::Vector3d>& generators_a = scratch.generators_a;
   std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, generators_b, generators_a);
-  // A flat vertex (its ring within margin/10 of one plane) that faces none
-  // of the feature's faces adds nothing: B has crossed that plane to reach
-  // it, and B's own vertices and bent edges against A's faces hold that
-  // crossing, as for a flat edge (narrow_phase.h).
+  // A flat vertex gets no fallback (narrow_phase.h says why).
   if (c.toi && !chosen && !flat_vertex(a, vertex, kFeatureSnapShare * margin))
     chosen = impact_cone_normal(aim, generators_b, sep0, margin);
   if (!chosen) return ConeVerdict::no_contact;
