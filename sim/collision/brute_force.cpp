@@ -1,6 +1,7 @@
 #include "sim/collision/brute_force.h"
 
 #include "sim/collision/candidate_reduction.h"
+#include "sim/collision/covered_faces.h"
 #include "sim/collision/narrow_phase.h"
 
 namespace recoil::sim {
@@ -21,9 +22,13 @@ void vertices_against_triangles(const PreparedSurface& a, const PreparedSurface&
 std::vector<ContactCandidate> brute_force_candidates(const std::vector<CollisionSurface>& surfaces,
                                                      const std::vector<CollisionPlane>& planes,
                                                      const CollisionSettings& settings) {
-  std::vector<PreparedSurface> prepared;
-  for (size_t i = 0; i < surfaces.size(); ++i) prepared.push_back(prepare_surface(surfaces[i], static_cast<int>(i)));
   const double margin = settings.margin;
+  const std::vector<std::vector<char>> covered = covered_triangles(surfaces, planes, kFeatureSnapShare * margin);
+  std::vector<PreparedSurface> prepared;
+  for (size_t i = 0; i < surfaces.size(); ++i) {
+    prepared.push_back(prepare_surface(surfaces[i], static_cast<int>(i)));
+    if (!covered[i].empty()) prepared.back().covered = &covered[i];
+  }
   std::vector<ContactCandidate> out;
   for (size_t i = 0; i < prepared.size(); ++i) {
     const PreparedSurface& a = prepared[i];

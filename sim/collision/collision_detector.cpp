@@ -8,6 +8,7 @@
 
 #include "core/check.h"
 #include "sim/collision/candidate_reduction.h"
+#include "sim/collision/covered_faces.h"
 #include "sim/collision/embree_scene.h"
 #include "sim/collision/local_deformation.h"
 #include "sim/collision/narrow_phase.h"
@@ -32,7 +33,35 @@ struct CollisionDetector::Impl {
   EmbreeDevice device;
   std::vector<SurfaceScenes> scenes;
   SearchMemo memo;
+  // covered_triangles of the last call's surfaces, and what they hold for:
+  // its fixed surfaces' x0 and triangles (empty for the others) and planes.
+  std::vector<std::vector<char>> covered;
+  std::vector<std::pair<Points, Triangles>> covered_for;
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> covered_planes;  // point, normal
+  void update_covered(const std::vector<CollisionSurface>& surfaces, const std::vector<CollisionPlane>& planes,
+                      double tolerance);
 };
+
+void CollisionDetector::Impl::update_covered(const std::vector<CollisionSurface>& surfaces,
+                                             const std::vector<CollisionPlane>& planes, double tolerance) {
+  const auto held = [&](size_t i) {  // whether surface i is as the marks were made for
+    const auto& [x, t] = covered_for[i];
+    if (surfaces[i].kind != BodyKind::fixed) return x.rows() == 0;
+    return x.rows() == surfaces[i].x0.rows() && t.rows() == surfaces[i].triangles.rows() && x == surfaces[i].x0 &&
+           t == surfaces[i].triangles;
+  };
+  bool same = surfaces.size() == covered_for.size() && planes.size() == covered_planes.size();
+  for (size_t i = 0; same && i < surfaces.size(); ++i) same = held(i);
+  for (size_t k = 0; same && k < planes.size(); ++k)
+    same = planes[k].point == covered_planes[k].first && planes[k].normal == covered_planes[k].second;
+  if (same) return;
+  covered = covered_triangles(surfaces, planes, tolerance);
+  covered_for.assign(surfaces.size(), {});
+  for (size_t i = 0; i < surfaces.size(); ++i)
+    if (surfaces[i].kind == BodyKind::fixed) covered_for[i] = {surfaces[i].x0, surfaces[i].triangles};
+  covered_planes.clear();
+  for (const CollisionPlane& p : planes) covered_planes.emplace_back(p.point, p.normal);
+}
 
 namespace {
 
@@ -151,11 +180,11 @@ SelfSearch self_search(const PreparedSurface& s, const RestClearance& clearance,
   return out;
 }
 
-// The edges that may be edge-edge candidates: those not flat (narrow_phase.h), ascending.
+// The edges that may be edge-edge candidates (edge_may_contact), ascending.
 std::vector<int> bent_edges(const PreparedSurface& s, double margin) {
   std::vector<int> out;
   for (int e = 0; e < s.num_edges(); ++e)
-    if (!flat_edge(s, e, margin)) out.push_back(e);
+    if (edge_may_contact(s, e, margin)) out.push_back(e);
   return out;
 }
 
@@ -198,6 +227,7 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
   }
   const double margin = m_settings.margin;
   const int threads = m_settings.num_threads;
+  m_impl->update_covered(surfaces, planes, kFeatureSnapShare * margin);
   // Refit (same triangles as last call) or rebuild each surface's scenes.
   std::vector<PreparedSurface> prepared;
   prepared.reserve(surfaces.size());
@@ -225,6 +255,7 @@ std::vector<ContactCandidate> CollisionDetector::detect(const std::vector<Collis
     // faces index by its triangles' vertices).
     prepared.push_back(
         prepare_surface(s, static_cast<int>(i), &sc.edges, &sc.edge_opposite, same ? sc.vertex_faces : nullptr));
+    if (!m_impl->covered[i].empty()) prepared.back().covered = &m_impl->covered[i];
     if (same) {
       sc.faces->update_vertices(s.x0);
     } else {

@@ -74,4 +74,10 @@ SegmentClosestPoints closest_points_on_segments(const Eigen::Vector3d& p0, const
   return {s, t};
 }
 
+Eigen::Vector3d face_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
+  const Eigen::Vector3d n = (b - a).cross(c - a);
+  const double scale = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
+  return n.squaredNorm() > 1e-24 * scale * scale ? n : Eigen::Vector3d::Zero();
+}
+
 }  // namespace recoil::sim

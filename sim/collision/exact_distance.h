@@ -20,6 +20,10 @@ struct TriangleClosestPoint {
 TriangleClosestPoint closest_point_on_triangle(const Eigen::Vector3d& p, const Eigen::Vector3d& a,
                                                const Eigen::Vector3d& b, const Eigen::Vector3d& c);
 
+// The triangle's normal (b - a) x (c - a), unnormalised, or zero for a
+// triangle whose normal is lost in rounding.
+Eigen::Vector3d face_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c);
+
 // Parameters s, t in [0, 1] of the closest points p0 + s (p1 - p0) and
 // q0 + t (q1 - q0) of two segments. A value clamped to an end is exactly 0 or
 // 1. For parallel segments (not unique) s is the smallest that attains the

@@ -6,8 +6,8 @@
 
 #include "core/check.h"
 #include "sim/collision/ccd.h"
+#include "sim/collision/cone_verdict.h"
 #include "sim/collision/exact_distance.h"
-#include "sim/collision/feature_cone.h"
 #include "sim/collision/rest_clearance.h"
 
 namespace recoil::sim {
@@ -45,21 +45,10 @@ Eigen::Vector3d choose_normal(bool touching, const Eigen::Vector3d& sep0, Eigen:
   return Eigen::Vector3d::UnitZ();
 }
 
-// Face normal, or zero for a triangle whose normal is lost in rounding.
-Eigen::Vector3d face_normal(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c) {
-  const Eigen::Vector3d n = (b - a).cross(c - a);
-  const double scale = std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()});
-  return n.squaredNorm() > 1e-24 * scale * scale ? n : Eigen::Vector3d::Zero();
-}
-
 Eigen::Vector3d edge_cross(const Eigen::Vector3d& da, const Eigen::Vector3d& db) {
   const Eigen::Vector3d n = da.cross(db);
   return n.squaredNorm() > 1e-24 * da.squaredNorm() * db.squaredNorm() ? n : Eigen::Vector3d::Zero();
 }
-
-// A closest point this close to an edge or vertex of the triangle is taken
-// to be on it (candidate_reduction.h): as a share of the contact margin.
-constexpr double kFeatureSnapShare = 0.1;
 
 // Zeroes the smallest weights of a closest point q on triangle t while the
 // snapped point stays within `reach` of q, then renormalises (the largest
@@ -117,27 +106,6 @@ double edge_bend(const PreparedSurface& s, int edge) {
   return std::max(std::abs(n_forward.dot(point_at(x, opposite[1]) - lo)), std::abs(n_back.dot(point_at(x, opposite[0]) - lo)));
 }
 
-// Whether the triangles around vertex v lie within `tolerance` (m) of one
-// plane at x0, as edge_bend measures it: each ring vertex off each ring plane.
-bool flat_vertex(const PreparedSurface& s, int v, double tolerance) {
-  const Triangles& tri = s.surface->triangles;
-  const Points& x = s.surface->x0;
-  const VertexFaces& around = *s.vertex_faces;
-  const int first = around.start[static_cast<size_t>(v)], last = around.start[static_cast<size_t>(v) + 1];
-  const Eigen::Vector3d origin = point_at(x, v);
-  for (int i = first; i < last; ++i) {
-    const int f = around.faces[static_cast<size_t>(i)];
-    const Eigen::Vector3d n = face_normal(point_at(x, tri(f, 0)), point_at(x, tri(f, 1)), point_at(x, tri(f, 2)));
-    if (n.isZero()) return false;
-    const Eigen::Vector3d unit = n.normalized();
-    for (int j = first; j < last; ++j)
-      for (int k = 0; k < 3; ++k)
-        if (std::abs(unit.dot(point_at(x, tri(around.faces[static_cast<size_t>(j)], k)) - origin)) > tolerance)
-          return false;
-  }
-  return last > first;
-}
-
 // Whether direction d (unit) leaves the surface across `edge` into its
 // inside: below both its triangles' planes (counter-clockwise from outside),
 // d . n below -kInsideCosine for each. Needs a closed surface's edge.
@@ -148,38 +116,34 @@ bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vect
   return d.dot(n_forward) < -kInsideCosine && d.dot(n_back) < -kInsideCosine;
 }
 
-// The triangles of `s` that hold every vertex of `feature` (1 to 3, as
-// SurfacePoint::touched_feature gives them): a vertex's ring, an edge's two
-// triangles, or the triangle itself, ascending; and their unit outward
-// normals at positions `at`. Degenerate triangles are left out. `cone` is
-// cleared first.
-struct FeatureCone {
-  std::vector<int> faces;
-  std::vector<Eigen::Vector3d> normals;
-};
-template <typename At>
-void feature_cone(const PreparedSurface& s, const std::array<int, 3>& feature, At at, FeatureCone& cone) {
-  cone.faces.clear();
-  cone.normals.clear();
+// Whether a covered triangle holds `edge` (its lower vertex's ring is searched).
+bool beside_covered_face(const PreparedSurface& s, int edge) {
+  if (s.covered == nullptr) return false;
+  const std::array<int, 2> ends = s.edges[static_cast<size_t>(edge)];
   const Triangles& tri = s.surface->triangles;
-  const int v = feature[0];
   const VertexFaces& around = *s.vertex_faces;
-  for (int i = around.start[static_cast<size_t>(v)]; i < around.start[static_cast<size_t>(v) + 1]; ++i) {
+  for (int i = around.start[static_cast<size_t>(ends[0])]; i < around.start[static_cast<size_t>(ends[0]) + 1]; ++i) {
     const int f = around.faces[static_cast<size_t>(i)];
-    bool holds = true;
-    for (int w : feature) holds = holds && (w < 0 || tri(f, 0) == w || tri(f, 1) == w || tri(f, 2) == w);
-    if (!holds) continue;
-    const Eigen::Vector3d n = face_normal(at(tri(f, 0)), at(tri(f, 1)), at(tri(f, 2)));
-    if (n.isZero()) continue;
-    cone.faces.push_back(f);
-    cone.normals.push_back(n.normalized());
+    if (is_covered(s, f) && (tri(f, 0) == ends[1] || tri(f, 1) == ends[1] || tri(f, 2) == ends[1])) return true;
   }
+  return false;
+}
+
+// Whether every triangle around vertex v is covered: v is inside what the
+// fixed bodies together enclose.
+bool buried_vertex(const PreparedSurface& s, int v) {
+  if (s.covered == nullptr) return false;
+  const VertexFaces& around = *s.vertex_faces;
+  const int first = around.start[static_cast<size_t>(v)], last = around.start[static_cast<size_t>(v) + 1];
+  for (int i = first; i < last; ++i)
+    if (!is_covered(s, around.faces[static_cast<size_t>(i)])) return false;
+  return last > first;
 }
 
 }  // namespace
 
-bool flat_edge(const PreparedSurface& s, int edge, double margin) {
-  return edge_bend(s, edge) <= kFeatureSnapShare * margin;
+bool edge_may_contact(const PreparedSurface& s, int edge, double margin) {
+  return !(edge_bend(s, edge) <= kFeatureSnapShare * margin) && !beside_covered_face(s, edge);
 }
 
 std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles) {
@@ -324,75 +288,10 @@ bool comes_within(double d0, double d1, double reach, double relative) {
 }  // namespace
 bool interacts_with_planes(const PreparedSurface& a) { return !is_prescribed(a.surface->kind); }
 
-namespace {
-
-// What the features' cones say of a vertex-triangle candidate between two
-// different closed surfaces (feature_cone.h): its normal and gap set, no contact, or
-// nothing where every triangle round a feature is degenerate.
-enum class ConeVerdict { contact, no_contact, undecided };
-
-// Judged where the pair is: at the impact, else at the start. `exact` is the
-// true closest point on the triangle (at the impact, if any), `sep0` = p - q
-// at the start and `rel` the relative motion over the step.
-ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const PreparedSurface& b, int triangle,
-                                   const SurfacePoint& exact, const Eigen::Vector3d& sep0, const Eigen::Vector3d& rel,
-                                   double margin, double tol, ContactCandidate& c) {
-  const CollisionSurface& sa = *a.surface;
-  const CollisionSurface& sb = *b.surface;
-  const double s = c.toi.value_or(0.0);
-  auto at_a = [&](int v) { return lerp(point_at(sa.x0, v), point_at(sa.x1, v), s); };
-  auto at_b = [&](int v) { return lerp(point_at(sb.x0, v), point_at(sb.x1, v), s); };
-  // Reused across calls (this runs for every nearby pair of two closed
-  // surfaces): each search thread allocates its cones once, not per pair.
-  struct Scratch {
-    FeatureCone cone_a, cone_b;
-    std::vector<Eigen::Vector3d> generators_a, generators_b;
-  };
-  thread_local Scratch scratch;
-  const std::array<int, 3> feature = exact.touched_feature();
-  if (feature[0] < 0) return ConeVerdict::undecided;
-  feature_cone(b, feature, at_b, scratch.cone_b);
-  feature_cone(a, {vertex, -1, -1}, at_a, scratch.cone_a);
-  const FeatureCone& cone_b = scratch.cone_b;
-  const FeatureCone& cone_a = scratch.cone_a;
-  if (cone_b.normals.empty() || cone_a.normals.empty()) return ConeVerdict::undecided;
-  const Eigen::Vector3d aim = rel.norm() > 0.0 ? Eigen::Vector3d(-rel.normalized()) : Eigen::Vector3d::Zero();
-  // At an impact p is within rounding of the feature, and d the side it
-  // meets it from.
-  const Eigen::Vector3d d =
-      c.toi ? Eigen::Vector3d(at_a(vertex) - lerp(exact.evaluate(sb.x0), exact.evaluate(sb.x1), s)) : sep0;
-  distinct_directions(cone_b.normals, scratch.generators_b);
-  distinct_directions(cone_a.normals, scratch.generators_a);
-  const std::vector<Eigen::Vector3d>& generators_b = scratch.generators_b;
-  const std::vector<Eigen::Vector3d>& generators_a = scratch.generators_a;
-  std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, generators_b, generators_a);
-  // A flat vertex gets no fallback (narrow_phase.h says why).
-  if (c.toi && !chosen && !flat_vertex(a, vertex, kFeatureSnapShare * margin))
-    chosen = impact_cone_normal(aim, generators_b, sep0, margin);
-  if (!chosen) return ConeVerdict::no_contact;
-  // An impact on a face that p started behind is its way out of B after
-  // crossing another face first, which that crossing holds.
-  if (c.toi && chosen->normal.dot(sep0) < -tol) return ConeVerdict::no_contact;
-  // The normal of other faces of the feature, one of which p lies over: that
-  // face's own pair gives the same row.
-  if (chosen->source >= 0 && chosen->source < static_cast<int>(generators_b.size())) {
-    for (size_t i = 0; i < cone_b.faces.size(); ++i) {
-      const int face = cone_b.faces[i];
-      if (face == triangle || (cone_b.normals[i] - chosen->normal).squaredNorm() >= 1e-24) continue;
-      const TriangleClosestPoint over = closest_point_on_triangle(
-          at_a(vertex), at_b(sb.triangles(face, 0)), at_b(sb.triangles(face, 1)), at_b(sb.triangles(face, 2)));
-      if (over.weight[0] > 0.0 && over.weight[1] > 0.0 && over.weight[2] > 0.0) return ConeVerdict::no_contact;
-    }
-  }
-  c.normal = chosen->normal;
-  c.gap = c.normal.dot(point_at(sa.x0, vertex) - c.b.evaluate(sb.x0));
-  return ConeVerdict::contact;
-}
-
-}  // namespace
 
 std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, int vertex, const PreparedSurface& b,
                                                      int triangle, double margin) {
+  if (is_covered(b, triangle) || buried_vertex(a, vertex)) return std::nullopt;  // covered_faces.h
   const CollisionSurface& sa = *a.surface;
   const CollisionSurface& sb = *b.surface;
   const std::array<int, 3> tv = {sb.triangles(triangle, 0), sb.triangles(triangle, 1), sb.triangles(triangle, 2)};
@@ -502,8 +401,8 @@ std::optional<ContactCandidate> test_edge_edge(const PreparedSurface& a, int edg
   if (a.index == b.index && in_face_adjacent_elements(sa, ea, eb)) return std::nullopt;
   const double reach = a.index == b.index ? self_reach(rest_distance(*sa.rest, ea, eb), margin) : margin;
   if (!(reach > 0.0) || !(distance <= reach + relative)) return std::nullopt;
-  // A flat edge adds nothing its neighbours do not (narrow_phase.h).
-  if (flat_edge(a, edge_a, margin) || flat_edge(b, edge_b, margin)) return std::nullopt;
+  // A flat or covered edge adds nothing its neighbours do not (narrow_phase.h).
+  if (!edge_may_contact(a, edge_a, margin) || !edge_may_contact(b, edge_b, margin)) return std::nullopt;
 
   const double tol = pair_tolerance(a, b);
   const double motion = a.edge_motion[edge_a] + b.edge_motion[edge_b];

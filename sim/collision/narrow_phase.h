@@ -50,6 +50,10 @@
 // itself does. Nor is a pair whose lattice elements are one or share a face
 // ever a self-contact (collision_types.h). Pairs of two prescribed (static or kinematic)
 // surfaces, and prescribed surfaces against planes, are never tested.
+// A triangle that another fixed body covers (covered_faces.h) is no
+// candidate, nor is a vertex whose triangles are all covered or an edge
+// beside a covered triangle, and covered triangles are left out of every
+// feature's normal cone.
 //
 // Closest-point weights: a vertex-triangle closest point on an edge or vertex
 // of the triangle has zero weights elsewhere, and one within margin/10 of an
@@ -124,6 +128,8 @@ struct PreparedSurface {
                                                   // non-manifold or inconsistently wound edge)
   std::shared_ptr<const VertexFaces> vertex_faces;  // the triangles around each vertex
   bool closed = false;                        // every edge has both triangles, wound consistently
+  const std::vector<char>* covered = nullptr;  // #F, 1 where another fixed body covers the triangle
+                                               // (covered_faces.h); null: none
   double max_motion = 0.0;                    // over all vertices
   double length_scale = 0.0;                  // largest |coordinate|, for tolerances
   Aabb box0;                                  // bounding box of x0
@@ -152,10 +158,20 @@ std::vector<std::array<int, 2>> unique_edges(const Triangles& triangles);
 // exactly two triangles share it, one each way round.
 std::vector<std::array<int, 2>> edge_opposites(const Triangles& triangles, const std::vector<std::array<int, 2>>& edges);
 
-// Whether `edge` is flat at x0: its two triangles within margin/10 of one
-// plane. The edge-edge rule above never makes a flat edge a candidate, so the
-// broad phase may leave it out.
-bool flat_edge(const PreparedSurface& s, int edge, double margin);
+// A closest point this close to an edge or vertex of the triangle is taken
+// to be on it (candidate_reduction.h), and a surface this close to a plane
+// is flat there: as a share of the contact margin.
+inline constexpr double kFeatureSnapShare = 0.1;
+
+// Whether another fixed body covers triangle f of `s` (covered_faces.h).
+inline bool is_covered(const PreparedSurface& s, int f) {
+  return s.covered != nullptr && (*s.covered)[static_cast<size_t>(f)] != 0;
+}
+
+// Whether `edge` may be an edge-edge candidate: it is not flat at x0 (its
+// two triangles within margin/10 of one plane) and neither of its triangles
+// is covered. The broad phase may leave the others out.
+bool edge_may_contact(const PreparedSurface& s, int edge, double margin);
 
 // False when no pair of primitives of a and b can satisfy the candidate rule:
 // their x0 boxes, each inflated by margin/2 + its largest motion, are apart.
