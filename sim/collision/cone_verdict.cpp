@@ -7,28 +7,6 @@
 namespace recoil::sim {
 namespace {
 
-// Whether the uncovered triangles around vertex v lie within `tolerance` (m)
-// of one plane at x0, as edge_bend measures it: each ring vertex off each
-// ring plane.
-bool flat_vertex(const PreparedSurface& s, int v, double tolerance) {
-  const Triangles& tri = s.surface->triangles;
-  const Points& x = s.surface->x0;
-  const VertexFaces& around = *s.vertex_faces;
-  std::vector<int> ring;
-  for (int i = around.start[static_cast<size_t>(v)]; i < around.start[static_cast<size_t>(v) + 1]; ++i)
-    if (!is_covered(s, around.faces[static_cast<size_t>(i)])) ring.push_back(around.faces[static_cast<size_t>(i)]);
-  const Eigen::Vector3d origin = point_at(x, v);
-  for (int f : ring) {
-    const Eigen::Vector3d n = face_normal(point_at(x, tri(f, 0)), point_at(x, tri(f, 1)), point_at(x, tri(f, 2)));
-    if (n.isZero()) return false;
-    const Eigen::Vector3d unit = n.normalized();
-    for (int g : ring)
-      for (int k = 0; k < 3; ++k)
-        if (std::abs(unit.dot(point_at(x, tri(g, k)) - origin)) > tolerance) return false;
-  }
-  return !ring.empty();
-}
-
 // The triangles of `s` that hold every vertex of `feature` (1 to 3, as
 // SurfacePoint::touched_feature gives them): a vertex's ring, an edge's two
 // triangles, or the triangle itself, ascending; and their unit outward
@@ -92,8 +70,7 @@ ConeVerdict judge_by_feature_cones(const PreparedSurface& a, int vertex, const P
   const std::vector<Eigen::Vector3d>& generators_b = scratch.generators_b;
   const std::vector<Eigen::Vector3d>& generators_a = scratch.generators_a;
   std::optional<ConeNormal> chosen = feature_cone_normal(d, aim, generators_b, generators_a);
-  // A flat vertex gets no fallback (narrow_phase.h says why).
-  if (c.toi && !chosen && !flat_vertex(a, vertex, kFeatureSnapShare * margin))
+  if (c.toi && !chosen)
     chosen = impact_cone_normal(aim, generators_b, sep0, margin);
   if (!chosen) return ConeVerdict::no_contact;
   // An impact on a face that p started behind is its way out of B after

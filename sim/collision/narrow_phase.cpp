@@ -116,6 +116,28 @@ bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vect
   return d.dot(n_forward) < -kInsideCosine && d.dot(n_back) < -kInsideCosine;
 }
 
+// Whether the uncovered triangles around vertex v lie within `tolerance` (m)
+// of one plane at x0, as edge_bend measures it: each ring vertex off each
+// ring plane.
+bool flat_vertex(const PreparedSurface& s, int v, double tolerance) {
+  const Triangles& tri = s.surface->triangles;
+  const Points& x = s.surface->x0;
+  const VertexFaces& around = *s.vertex_faces;
+  std::vector<int> ring;
+  for (int i = around.start[static_cast<size_t>(v)]; i < around.start[static_cast<size_t>(v) + 1]; ++i)
+    if (!is_covered(s, around.faces[static_cast<size_t>(i)])) ring.push_back(around.faces[static_cast<size_t>(i)]);
+  const Eigen::Vector3d origin = point_at(x, v);
+  for (int f : ring) {
+    const Eigen::Vector3d n = face_normal(point_at(x, tri(f, 0)), point_at(x, tri(f, 1)), point_at(x, tri(f, 2)));
+    if (n.isZero()) return false;
+    const Eigen::Vector3d unit = n.normalized();
+    for (int g : ring)
+      for (int k = 0; k < 3; ++k)
+        if (std::abs(unit.dot(point_at(x, tri(g, k)) - origin)) > tolerance) return false;
+  }
+  return !ring.empty();
+}
+
 // Whether a covered triangle holds `edge` (its lower vertex's ring is searched).
 bool beside_covered_face(const PreparedSurface& s, int edge) {
   if (s.covered == nullptr) return false;
@@ -317,6 +339,9 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   if (!(reach > 0.0) || !(distance <= reach + relative)) return std::nullopt;
   if (relative > 0.0 &&
       !comes_within(distance, (p1 - closest_point_on_triangle(p1, t1[0], t1[1], t1[2]).point).norm(), reach, relative))
+    return std::nullopt;
+  // A flat vertex of a body that keeps its shape adds nothing (narrow_phase.h).
+  if (a.index != b.index && a.surface->kind != BodyKind::deformable && flat_vertex(a, vertex, kFeatureSnapShare * margin))
     return std::nullopt;
 
   const double tol = pair_tolerance(a, b);

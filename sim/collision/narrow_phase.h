@@ -39,6 +39,18 @@
 //   of face diagonals sat 1-2 mm from the crossings of the face's border
 //   (normal rows with cosine 0.9999): near-duplicates that the contact
 //   solver cannot tell apart.
+// - a vertex of a rigid, static or kinematic surface whose triangles lie
+//   within margin/10 of one plane (a flat vertex: a box face's lattice) is
+//   no vertex-triangle candidate against another surface, by the argument
+//   for flat edges: the gap from the plane to a triangle of B is linear
+//   over it, so it is smallest at B's vertices (against A's faces) or where
+//   B's edges leave the flat patch across bent edges, never at a vertex
+//   inside the patch. Such a pair gave the normal of B's face, not of the
+//   patch: a faceted ball landing on a box's lattice vertex was pushed
+//   sideways along its tilted facet, and a block sliding on a box floor was
+//   held against its front face. A deformable surface's flat vertices stay
+//   (its patch is flat at x0 only), as its lattice vertices carry the load
+//   spread over a resting face.
 // - vertex v / plane: min(signed distance at x0, at x1) <= margin.
 // Self-contact takes a pair of one surface only within min(margin, rest
 // distance - margin) (collision_types.h): never a pair within the margin of
@@ -68,12 +80,7 @@
 // lies in both features' normal cones, else the qualifying face normal
 // nearest it, else no candidate; at an impact, also no candidate on a face p
 // started behind, and a vertex facing none of the faces is held by one it
-// started more than a margin in front of, unless it is flat (its triangles
-// within margin/10 of one plane: B crossed that plane to reach it, and B's
-// vertices and bent edges against A's faces hold the crossing, as for a flat
-// edge; a block sliding on a box floor was otherwise held against its front
-// face by floor lattice vertices that the contact-free prediction, falling
-// into the floor, let the continuous check meet there); a fallback normal of
+// started more than a margin in front of; a fallback normal of
 // another face that p lies over is left to that face's own pair. The rest of this
 // paragraph is the rule for every other pair, and for a closed pair whose
 // triangles round a feature are all degenerate.
