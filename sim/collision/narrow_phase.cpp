@@ -123,19 +123,24 @@ bool flat_vertex(const PreparedSurface& s, int v, double tolerance) {
   const Triangles& tri = s.surface->triangles;
   const Points& x = s.surface->x0;
   const VertexFaces& around = *s.vertex_faces;
-  std::vector<int> ring;
-  for (int i = around.start[static_cast<size_t>(v)]; i < around.start[static_cast<size_t>(v) + 1]; ++i)
-    if (!is_covered(s, around.faces[static_cast<size_t>(i)])) ring.push_back(around.faces[static_cast<size_t>(i)]);
+  const int first = around.start[static_cast<size_t>(v)], last = around.start[static_cast<size_t>(v) + 1];
   const Eigen::Vector3d origin = point_at(x, v);
-  for (int f : ring) {
+  bool any = false;
+  for (int i = first; i < last; ++i) {
+    const int f = around.faces[static_cast<size_t>(i)];
+    if (is_covered(s, f)) continue;
+    any = true;
     const Eigen::Vector3d n = face_normal(point_at(x, tri(f, 0)), point_at(x, tri(f, 1)), point_at(x, tri(f, 2)));
     if (n.isZero()) return false;
     const Eigen::Vector3d unit = n.normalized();
-    for (int g : ring)
+    for (int j = first; j < last; ++j) {
+      const int g = around.faces[static_cast<size_t>(j)];
+      if (is_covered(s, g)) continue;
       for (int k = 0; k < 3; ++k)
         if (std::abs(unit.dot(point_at(x, tri(g, k)) - origin)) > tolerance) return false;
+    }
   }
-  return !ring.empty();
+  return any;
 }
 
 // Whether a covered triangle holds `edge` (its lower vertex's ring is searched).
