@@ -116,10 +116,15 @@ bool points_inside_at_edge(const PreparedSurface& s, int edge, const Eigen::Vect
   return d.dot(n_forward) < -kInsideCosine && d.dot(n_back) < -kInsideCosine;
 }
 
-// Whether the uncovered triangles around vertex v lie within `tolerance` (m)
-// of one plane at x0, as edge_bend measures it: each ring vertex off each
-// ring plane.
+// Whether vertex v lies inside a flat patch at x0: the surface is closed (so
+// its triangles close round v; a sheet's border vertex can be the patch's
+// lowest point) and its uncovered triangles lie within `tolerance` (m) of
+// one plane, as edge_bend measures it (each ring vertex off each ring
+// plane). Where covered triangles stand in the ring the fixed bodies
+// together continue the patch or rise from it (a seam, a concave corner),
+// and the free space there is convex: the patch's border still holds.
 bool flat_vertex(const PreparedSurface& s, int v, double tolerance) {
+  if (!s.closed) return false;
   const Triangles& tri = s.surface->triangles;
   const Points& x = s.surface->x0;
   const VertexFaces& around = *s.vertex_faces;
@@ -507,6 +512,7 @@ std::optional<ContactCandidate> test_vertex_plane(const PreparedSurface& a, int 
   const Eigen::Vector3d p0 = point_at(a.surface->x0, vertex), p1 = point_at(a.surface->x1, vertex);
   const double d0 = n.dot(p0 - plane.point), d1 = n.dot(p1 - plane.point);
   if (!(std::min(d0, d1) <= margin)) return std::nullopt;
+  if (a.surface->kind != BodyKind::deformable && flat_vertex(a, vertex, kFeatureSnapShare * margin)) return std::nullopt;
   ContactCandidate c;
   c.kind = ContactKind::vertex_plane;
   c.surface_a = a.index;

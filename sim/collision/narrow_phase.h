@@ -39,19 +39,22 @@
 //   of face diagonals sat 1-2 mm from the crossings of the face's border
 //   (normal rows with cosine 0.9999): near-duplicates that the contact
 //   solver cannot tell apart.
-// - a vertex of a rigid, static or kinematic surface whose triangles lie
-//   within margin/10 of one plane (a flat vertex: a box face's lattice) is
-//   no vertex-triangle candidate against another surface, by the argument
-//   for flat edges: the gap from the plane to a triangle of B is linear
-//   over it, so it is smallest at B's vertices (against A's faces) or where
-//   B's edges leave the flat patch across bent edges, never at a vertex
-//   inside the patch. Such a pair gave the normal of B's face, not of the
+// - a vertex of a rigid, static or kinematic closed surface whose
+//   uncovered triangles lie within margin/10 of one plane (a flat vertex:
+//   inside a box face's lattice or on a seam of tiles, not on a sheet's
+//   border) is
+//   no candidate against another surface or a plane, by the argument for
+//   flat edges: the gap from the patch to a triangle of B (or to a plane)
+//   is linear over it, so it is smallest at B's vertices (against A's
+//   faces), where B's edges leave the patch across bent edges, or at the
+//   patch's own border, never at a vertex inside the patch. Such a pair gave the normal of B's face, not of the
 //   patch: a faceted ball landing on a box's lattice vertex was pushed
 //   sideways along its tilted facet, and a block sliding on a box floor was
 //   held against its front face. A deformable surface's flat vertices stay
 //   (its patch is flat at x0 only), as its lattice vertices carry the load
 //   spread over a resting face.
-// - vertex v / plane: min(signed distance at x0, at x1) <= margin.
+// - vertex v / plane: min(signed distance at x0, at x1) <= margin (flat
+//   vertices of bodies that keep their shape excepted, above).
 // Self-contact takes a pair of one surface only within min(margin, rest
 // distance - margin) (collision_types.h): never a pair within the margin of
 // each other in the rest shape (a vertex and its own triangles, edges

@@ -111,6 +111,43 @@ TEST(ContactValidation, BallDroppedOnABoxLatticeVertexStopsWhereItLands) {
   }
 }
 
+// A rigid open sheet (a flat square of four triangles round a centre
+// vertex), turned so that a corner leads, lands on the ground and on a
+// static box instead of passing through: every vertex of a flat sheet lies
+// within its plane, but its border vertices are where it touches first.
+TEST(ContactValidation, AFlatRigidSheetLandsOnItsCorner) {
+  const double dt = 0.004;
+  TriMesh sheet;
+  sheet.vertices.resize(5, 3);
+  sheet.vertices << -0.1, 0.0, -0.1, 0.1, 0.0, -0.1, 0.1, 0.0, 0.1, -0.1, 0.0, 0.1, 0.0, 0.0, 0.0;
+  sheet.triangles.resize(4, 3);
+  sheet.triangles << 0, 4, 1, 1, 4, 2, 2, 4, 3, 3, 4, 0;
+  for (const bool on_box : {false, true}) {
+    WorldDesc w = base_world(dt);
+    if (on_box) {
+      RigidBodyDesc floor = rigid_box("floor", Eigen::Vector3d(1.0, 0.2, 1.0), Eigen::Vector3d(0.0, -0.1, 0.0));
+      floor.mesh = make_box(Eigen::Vector3d(1.0, 0.2, 1.0));
+      floor.kind = BodyKind::fixed;
+      w.rigid_bodies.push_back(floor);
+    } else {
+      w.planes.push_back(ground(friction(0.5, 0.5)));
+    }
+    RigidBodyDesc body = rigid_box("sheet", Eigen::Vector3d::Ones(), Eigen::Vector3d(0.0, 0.2, 0.0), friction(0.5, 0.5));
+    body.mesh = sheet;
+    body.transform.rotation = Eigen::Vector3d(30.0, 0.0, 20.0);  // degrees
+    w.rigid_bodies.push_back(body);
+    World world(w);
+    double lowest = 1.0;
+    for (int i = 0; i < steps(1.0, dt); ++i) {
+      ASSERT_EQ(world.step().status, StepStatus::ok);
+      lowest = std::min(lowest, world.surfaces().back().positions.col(1).minCoeff());
+    }
+    validation::Measured() << "flat rigid sheet dropped corner first on " << (on_box ? "a static box" : "the ground")
+                           << ": lowest vertex " << lowest * 1e3 << " mm\n";
+    EXPECT_GT(lowest, -w.contact.margin) << (on_box ? "box" : "ground");
+  }
+}
+
 TEST(ContactValidation, AlignedBoxesDoNotFallThroughEachOther) {
   // Corner exactly over corner: every corner of one box touches the top face
   // and two side faces of the other. Resting at zero distance, the next
