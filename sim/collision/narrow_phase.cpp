@@ -148,6 +148,18 @@ bool flat_vertex(const PreparedSurface& s, int v, double tolerance) {
   return any;
 }
 
+// Whether vertex v is a flat vertex of a body that keeps its shape, never a
+// candidate (narrow_phase.h): deformable patches are flat at x0 only.
+// Flat means coplanar to the precision a mesh file's float coordinates
+// carry (relative kCoplanarShare of the body's size), not within a share of
+// the margin: a finely faceted ball is flat within that at every vertex, and
+// with none of them a candidate it fell through the ground.
+constexpr double kCoplanarShare = 1e-7;
+bool in_rigid_flat_patch(const PreparedSurface& s, int v) {
+  if (s.surface->kind == BodyKind::deformable || !s.box0.valid()) return false;
+  return flat_vertex(s, v, kCoplanarShare * s.box0.extent().norm());
+}
+
 // Whether a covered triangle holds `edge` (its lower vertex's ring is searched).
 bool beside_covered_face(const PreparedSurface& s, int edge) {
   if (s.covered == nullptr) return false;
@@ -351,8 +363,7 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
       !comes_within(distance, (p1 - closest_point_on_triangle(p1, t1[0], t1[1], t1[2]).point).norm(), reach, relative))
     return std::nullopt;
   // A flat vertex of a body that keeps its shape adds nothing (narrow_phase.h).
-  if (a.index != b.index && a.surface->kind != BodyKind::deformable && flat_vertex(a, vertex, kFeatureSnapShare * margin))
-    return std::nullopt;
+  if (in_rigid_flat_patch(a, vertex)) return std::nullopt;
 
   const double tol = pair_tolerance(a, b);
   ContactCandidate c;
@@ -512,7 +523,7 @@ std::optional<ContactCandidate> test_vertex_plane(const PreparedSurface& a, int 
   const Eigen::Vector3d p0 = point_at(a.surface->x0, vertex), p1 = point_at(a.surface->x1, vertex);
   const double d0 = n.dot(p0 - plane.point), d1 = n.dot(p1 - plane.point);
   if (!(std::min(d0, d1) <= margin)) return std::nullopt;
-  if (a.surface->kind != BodyKind::deformable && flat_vertex(a, vertex, kFeatureSnapShare * margin)) return std::nullopt;
+  if (in_rigid_flat_patch(a, vertex)) return std::nullopt;  // narrow_phase.h
   ContactCandidate c;
   c.kind = ContactKind::vertex_plane;
   c.surface_a = a.index;

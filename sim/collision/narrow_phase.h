@@ -40,9 +40,10 @@
 //   (normal rows with cosine 0.9999): near-duplicates that the contact
 //   solver cannot tell apart.
 // - a vertex of a rigid, static or kinematic closed surface whose
-//   uncovered triangles lie within margin/10 of one plane (a flat vertex:
-//   inside a box face's lattice or on a seam of tiles, not on a sheet's
-//   border) is
+//   uncovered triangles are coplanar (to 1e-7 of the body's size, the
+//   precision of a float mesh file; a flat vertex: inside a box face's
+//   lattice or on a seam of tiles, not on a sheet's border, nor anywhere on
+//   a finely faceted ball, which is flat within the margin everywhere) is
 //   no candidate against another surface or a plane, by the argument for
 //   flat edges: the gap from the patch to a triangle of B (or to a plane)
 //   is linear over it, so it is smallest at B's vertices (against A's

@@ -148,6 +148,34 @@ TEST(ContactValidation, AFlatRigidSheetLandsOnItsCorner) {
   }
 }
 
+// A finely faceted rigid ball (20 480 facets, kept as its collision surface)
+// rests on the ground and on a static box: each vertex's ring is within a
+// tenth of the margin of a plane, and were that flat, no vertex would hold it.
+TEST(ContactValidation, AFinelyFacetedRigidBallRestsOnTheGroundAndOnABox) {
+  const double dt = 0.004, radius = 0.05;
+  for (const bool on_box : {false, true}) {
+    WorldDesc w = base_world(dt);
+    if (on_box) {
+      RigidBodyDesc floor = rigid_box("floor", Eigen::Vector3d(1.0, 0.2, 1.0), Eigen::Vector3d(0.0, -0.1, 0.0));
+      floor.mesh = make_box(Eigen::Vector3d(1.0, 0.2, 1.0));
+      floor.kind = BodyKind::fixed;
+      w.rigid_bodies.push_back(floor);
+    } else {
+      w.planes.push_back(ground(friction(0.5, 0.5)));
+    }
+    RigidBodyDesc ball = rigid_sphere("ball", radius, {0.0, radius + 0.05, 0.0}, friction(0.5, 0.5), 5);
+    ball.collision.keep_mesh = true;
+    w.rigid_bodies.push_back(ball);
+    World world(w);
+    run(world, steps(1.0, dt));
+    const double height = motion(world, 0).center.y() - radius;
+    validation::Measured() << "finely faceted rigid ball on " << (on_box ? "a static box" : "the ground")
+                           << ": centre " << height * 1e3 << " mm above its radius\n";
+    EXPECT_GT(height, -w.contact.margin) << (on_box ? "box" : "ground");
+    EXPECT_LT(height, w.contact.margin) << (on_box ? "box" : "ground");
+  }
+}
+
 TEST(ContactValidation, AlignedBoxesDoNotFallThroughEachOther) {
   // Corner exactly over corner: every corner of one box touches the top face
   // and two side faces of the other. Resting at zero distance, the next
