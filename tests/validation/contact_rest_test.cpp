@@ -111,6 +111,22 @@ TEST(ContactValidation, BallDroppedOnABoxLatticeVertexStopsWhereItLands) {
   }
 }
 
+// A world whose floor, top at y = 0, is the ground plane or a static box
+// with the scene primitive's 8 x 8-cell faces.
+WorldDesc ground_or_static_box(double dt, bool on_box) {
+  WorldDesc w = base_world(dt);
+  if (!on_box) {
+    w.planes.push_back(ground(friction(0.5, 0.5)));
+    return w;
+  }
+  const Eigen::Vector3d size(1.0, 0.2, 1.0);
+  RigidBodyDesc floor = rigid_box("floor", size, Eigen::Vector3d(0.0, -0.1, 0.0), friction(0.5, 0.5));
+  floor.mesh = make_box(size);
+  floor.kind = BodyKind::fixed;
+  w.rigid_bodies.push_back(floor);
+  return w;
+}
+
 // A rigid open sheet (a flat square of four triangles round a centre
 // vertex), turned so that a corner leads, lands on the ground and on a
 // static box instead of passing through: every vertex of a flat sheet lies
@@ -123,15 +139,7 @@ TEST(ContactValidation, AFlatRigidSheetLandsOnItsCorner) {
   sheet.triangles.resize(4, 3);
   sheet.triangles << 0, 4, 1, 1, 4, 2, 2, 4, 3, 3, 4, 0;
   for (const bool on_box : {false, true}) {
-    WorldDesc w = base_world(dt);
-    if (on_box) {
-      RigidBodyDesc floor = rigid_box("floor", Eigen::Vector3d(1.0, 0.2, 1.0), Eigen::Vector3d(0.0, -0.1, 0.0));
-      floor.mesh = make_box(Eigen::Vector3d(1.0, 0.2, 1.0));
-      floor.kind = BodyKind::fixed;
-      w.rigid_bodies.push_back(floor);
-    } else {
-      w.planes.push_back(ground(friction(0.5, 0.5)));
-    }
+    WorldDesc w = ground_or_static_box(dt, on_box);
     RigidBodyDesc body = rigid_box("sheet", Eigen::Vector3d::Ones(), Eigen::Vector3d(0.0, 0.2, 0.0), friction(0.5, 0.5));
     body.mesh = sheet;
     body.transform.rotation = Eigen::Vector3d(30.0, 0.0, 20.0);  // degrees
@@ -154,15 +162,7 @@ TEST(ContactValidation, AFlatRigidSheetLandsOnItsCorner) {
 TEST(ContactValidation, AFinelyFacetedRigidBallRestsOnTheGroundAndOnABox) {
   const double dt = 0.004, radius = 0.05;
   for (const bool on_box : {false, true}) {
-    WorldDesc w = base_world(dt);
-    if (on_box) {
-      RigidBodyDesc floor = rigid_box("floor", Eigen::Vector3d(1.0, 0.2, 1.0), Eigen::Vector3d(0.0, -0.1, 0.0));
-      floor.mesh = make_box(Eigen::Vector3d(1.0, 0.2, 1.0));
-      floor.kind = BodyKind::fixed;
-      w.rigid_bodies.push_back(floor);
-    } else {
-      w.planes.push_back(ground(friction(0.5, 0.5)));
-    }
+    WorldDesc w = ground_or_static_box(dt, on_box);
     RigidBodyDesc ball = rigid_sphere("ball", radius, {0.0, radius + 0.05, 0.0}, friction(0.5, 0.5), 5);
     ball.collision.keep_mesh = true;
     w.rigid_bodies.push_back(ball);
