@@ -58,8 +58,10 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    if (e.get_exit_code() == 0) return app.exit(e);  // --help, --version
-    std::cerr << "recoil: error: " << cli::usage_error(app, e, std::vector<std::string>(argv + 1, argv + argc)) << std::endl;
+    const std::vector<std::string> args(argv + 1, argv + argc);
+    // --help or --version; after a word that names no command, that word is the mistake.
+    if (e.get_exit_code() == 0 && cli::unknown_command(app, args).empty()) return app.exit(e);
+    std::cerr << "recoil: error: " << cli::usage_error(app, e, args) << std::endl;
     return static_cast<int>(ErrorKind::bad_input);
   }
   cli::report_interrupts_outside_the_loops(global.log_json);

@@ -23,10 +23,10 @@ std::string known_list(const std::vector<std::string>& names) {
 
 }  // namespace
 
-std::string usage_error(const CLI::App& app, const CLI::ParseError& error, const std::vector<std::string>& args) {
+std::string unknown_command(const CLI::App& app, const std::vector<std::string>& args) {
+  if (!app.get_subcommands().empty()) return "";
   std::vector<std::string> commands;
   for (const CLI::App* sub : app.get_subcommands([](const CLI::App*) { return true; })) commands.push_back(sub->get_name());
-  const std::vector<CLI::App*> chosen = app.get_subcommands();
   // Before any command was recognised, the first word past the top-level
   // options (and their values) is a mistyped command.
   size_t word = 0;
@@ -36,12 +36,16 @@ std::string usage_error(const CLI::App& app, const CLI::ParseError& error, const
     const bool takes_value = option != nullptr && option->get_type_size() > 0 && name.size() == args[word].size();
     word += takes_value ? 2 : 1;
   }
-  if (chosen.empty() && word < args.size() && args[word] != "--") {
-    const std::string guess = near_miss(args[word], commands);
-    return "unknown command \"" + args[word] + "\"; " +
-           (guess.empty() ? "the commands are " + known_list(commands) : "did you mean \"" + guess + "\"?") +
-           " (see --help)";
-  }
+  if (word >= args.size() || args[word] == "--") return "";
+  const std::string guess = near_miss(args[word], commands);
+  return "unknown command \"" + args[word] + "\"; " +
+         (guess.empty() ? "the commands are " + known_list(commands) : "did you mean \"" + guess + "\"?") +
+         " (see --help)";
+}
+
+std::string usage_error(const CLI::App& app, const CLI::ParseError& error, const std::vector<std::string>& args) {
+  if (const std::string unknown = unknown_command(app, args); !unknown.empty()) return unknown;
+  const std::vector<CLI::App*> chosen = app.get_subcommands();
   const CLI::App& command = chosen.empty() ? app : *chosen.front();
   const std::vector<std::string> options = long_options(command);
   const std::string see = " (see recoil " + (chosen.empty() ? "" : command.get_name() + " ") + "--help)";

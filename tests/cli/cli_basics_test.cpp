@@ -25,6 +25,18 @@ TEST(Cli, UnknownCommandIsBadUsage) {
                    "compare, batch (see --help)\n");
 }
 
+// A word that names no command is the mistake even when --help follows it:
+// printing the top-level help and exiting 0 read as though it were one.
+TEST(Cli, HelpAfterAnUnknownCommandNamesTheWord) {
+  const CommandResult r = run_recoil("settle --help");
+  EXPECT_EQ(r.exit_code, 2);
+  EXPECT_EQ(r.err, "recoil: error: unknown command \"settle\"; the commands are run, drop, turntable, info, "
+                   "compare, batch (see --help)\n");
+  EXPECT_EQ(r.out, "");
+  EXPECT_EQ(run_recoil("run --help").exit_code, 0);
+  EXPECT_EQ(run_recoil("-q --help").exit_code, 0);
+}
+
 // One line each, with the closest command or option named.
 TEST(Cli, TyposGetADidYouMean) {
   const CommandResult command = run_recoil("runn scene.json");
