@@ -335,7 +335,7 @@ bool interacts_with_planes(const PreparedSurface& a) { return !is_prescribed(a.s
 
 std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, int vertex, const PreparedSurface& b,
                                                      int triangle, double margin) {
-  if (is_covered(b, triangle) || buried_vertex(a, vertex)) return std::nullopt;  // covered_faces.h
+  if (is_covered(b, triangle)) return std::nullopt;  // covered_faces.h
   const CollisionSurface& sa = *a.surface;
   const CollisionSurface& sb = *b.surface;
   const std::array<int, 3> tv = {sb.triangles(triangle, 0), sb.triangles(triangle, 1), sb.triangles(triangle, 2)};
@@ -356,6 +356,8 @@ std::optional<ContactCandidate> test_vertex_triangle(const PreparedSurface& a, i
   const TriangleClosestPoint closest = closest_point_on_triangle(p0, t0[0], t0[1], t0[2]);
   const double distance = (p0 - closest.point).norm();
   if (!(distance <= margin + relative)) return std::nullopt;
+  // Its ring is walked only for pairs this near.
+  if (buried_vertex(a, vertex)) return std::nullopt;
   if (a.index == b.index && in_face_adjacent_elements(sa, std::array<int, 1>{vertex}, tv)) return std::nullopt;
   const double reach = a.index == b.index ? self_reach(rest_distance(*sa.rest, vertex, tv), margin) : margin;
   if (!(reach > 0.0) || !(distance <= reach + relative)) return std::nullopt;
