@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 
 #include "core/check.h"
 #include "core/error.h"
@@ -160,24 +161,40 @@ void World::reset_energy_reference() {
   const size_t count = static_cast<size_t>(num_dynamic_bodies());
   m_energy0.assign(count, 0.0);
   m_energy_scale.assign(count, 0.0);
+  // The fastest surface point of any kinematic body, m/s.
+  double drive = 0.0;
+  for (const RigidBody& body : m_rigid)
+    if (body.kind == BodyKind::kinematic)
+      drive = std::max(drive, body.velocity.norm() + body.angular_velocity.norm() * body.local.rowwise().norm().maxCoeff());
+  // Per body: kg; J of kinetic and elastic energy; J that gravity releases over a fall of 10 body sizes.
+  std::vector<double> mass(count, 0.0), held(count, 0.0), fall(count, 0.0);
+  const std::vector<BodyStats> stats = this->stats();
   for (size_t i = 0; i < count; ++i) {
     const DynamicBody body = dynamic_body(static_cast<int>(i));
-    double elastic = 0.0, mass = 0.0;
+    double elastic = 0.0;
     Aabb box;
     if (body.deformable) {
       elastic = elastic_state(*body.deformable, m_x, /*with_energy=*/true).energy;
       m_elastic[i] = elastic;
       box = bounding_box(body.deformable->surface);
-      mass = body.deformable->mass.sum();
+      mass[i] = body.deformable->mass.sum();
     } else {
       box = bounding_box(body.rigid->local);
-      mass = body.rigid->mass;
+      mass[i] = body.rigid->mass;
     }
     m_energy0[i] = total_energy(static_cast<int>(i), elastic);
-    const double size = box.valid() ? box.extent().norm() : 1.0;
-    // Energy scale: initial kinetic + elastic, plus what gravity can release
-    // over a fall of 10 body sizes, plus a floor for bodies at rest in zero g.
-    m_energy_scale[i] = std::abs(m_energy0[i]) + mass * m_gravity.norm() * 10.0 * size + mass * 1e-6;
+    held[i] = stats[i].kinetic_energy + elastic;
+    fall[i] = mass[i] * m_gravity.norm() * 10.0 * (box.valid() ? box.extent().norm() : 1.0);
+  }
+  const double all = std::accumulate(held.begin(), held.end(), 0.0) + std::accumulate(fall.begin(), fall.end(), 0.0);
+  for (size_t i = 0; i < count; ++i) {
+    // Energy scale: its own, and what gravity can release in its fall; what
+    // contact can hand it from the other bodies (struck in zero g, a body at
+    // rest takes its share of the striker's); what a kinematic body can give
+    // it (2 m V^2: a bounce off a surface moving at V); a floor for bodies
+    // at rest in zero g.
+    m_energy_scale[i] = std::abs(m_energy0[i]) + fall[i] + (all - held[i] - fall[i]) +
+                        2.0 * mass[i] * drive * drive + mass[i] * 1e-6;
   }
 }
 

@@ -109,6 +109,34 @@ TEST(WorldRigid, KinematicAndFixedBodiesFollowTheirScript) {
   EXPECT_EQ(world.stats()[0].name, "jelly");
 }
 
+// Contact hands energy from body to body: in zero gravity a box at rest
+// struck by another, or pushed by a kinematic paddle, gains kinetic energy
+// from nothing of its own, and that is no blow-up.
+TEST(WorldRigid, AStruckOrPushedBodyInZeroGravityIsNoBlowUp) {
+  for (const bool paddle : {false, true}) {
+    WorldDesc w = base_world(0.002);
+    w.gravity.setZero();
+    RigidBodyDesc striker = rigid_box(paddle ? "paddle" : "striker", {0.1, 0.1, 0.1}, {0.0, 0.0, 0.0});
+    striker.velocity = {2.0, 0.0, 0.0};
+    if (paddle) striker.kind = BodyKind::kinematic;
+    w.rigid_bodies.push_back(striker);
+    w.rigid_bodies.push_back(rigid_box("struck", {0.1, 0.1, 0.1}, {0.3, 0.02, 0.0}));
+    World world(w);
+    for (int i = 0; i < 150; ++i) ASSERT_EQ(world.step().status, StepStatus::ok) << (paddle ? "paddle" : "striker");
+    const std::vector<BodyStats> stats = world.stats();
+    const BodyStats& struck = stats.back();
+    Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+    for (const BodyStats& b : stats) momentum += b.momentum;
+    std::cout << (paddle ? "pushed by a paddle" : "struck") << " in zero g: struck box at " << struck.momentum.x() / struck.mass
+              << " m/s, total momentum " << momentum.transpose() << " kg m/s\n";
+    EXPECT_GT(struck.momentum.x() / struck.mass, 0.5);
+    // Between two dynamic bodies nothing else acts: momentum stays 2 m/s times the striker's mass.
+    if (!paddle) {
+      EXPECT_LT((momentum - Eigen::Vector3d(2.0 * stats[0].mass, 0.0, 0.0)).norm(), 1e-9 * stats[0].mass);
+    }
+  }
+}
+
 TEST(WorldRigid, RejectsBadInput) {
   WorldDesc w = base_world(0.01);
   w.planes.push_back(ground());
