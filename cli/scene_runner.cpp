@@ -330,11 +330,14 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
   if (scene.settle > 0.0) {
     const long settle_steps = std::lround(scene.settle / dt);
     RestWatch rest(dt);
+    // What settles is the scene as set up: kinematic bodies start their motion with frame 1.
+    world->hold_kinematic(true);
     while (world->counters().steps < settle_steps && !pending_interrupt() && advance(settling, 0))
       if (rest.update(world->stats())) {
         result.settled = true;
         break;
       }
+    world->hold_kinematic(false);
     result.settle_time = world->time();
   }
   const long first_step = world->counters().steps;

@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <numeric>
+#include <tuple>
+#include <utility>
 
 #include "core/check.h"
 #include "core/error.h"
@@ -196,6 +198,23 @@ void World::reset_energy_reference() {
     m_energy_scale[i] = std::abs(m_energy0[i]) + fall[i] + (all - held[i] - fall[i]) +
                         2.0 * mass[i] * drive * drive + mass[i] * 1e-6;
   }
+}
+
+void World::hold_kinematic(bool held) {
+  if (held == m_kinematic_held) return;
+  m_kinematic_held = held;
+  size_t k = 0;
+  for (RigidBody& body : m_rigid) {
+    if (body.kind != BodyKind::kinematic) continue;
+    if (held) {
+      m_held_scripts.emplace_back(body.velocity, body.angular_velocity);
+      body.velocity.setZero();
+      body.angular_velocity.setZero();
+    } else {
+      std::tie(body.velocity, body.angular_velocity) = m_held_scripts[k++];
+    }
+  }
+  if (!held) m_held_scripts.clear();
 }
 
 double World::total_energy(int i, double elastic) const {

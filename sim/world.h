@@ -156,6 +156,10 @@ class World {
   // the blow-up check restarts from the new state unless told otherwise.
   void set_state(const Eigen::VectorXd& positions, const Eigen::VectorXd& velocities,
                  bool reset_energy_reference = true);
+  // While held, kinematic bodies stand where they are (a scene settles
+  // before its first frame with them still); released, their scripted
+  // velocities drive them on from there.
+  void hold_kinematic(bool held);
   // The system matrix of the last step (for tests and the contact solver).
   const BlockSparseMatrix& system_matrix() const { return m_A; }
 
@@ -213,6 +217,10 @@ class World {
   std::optional<MomentumPreconditioner> m_preconditioner;  // of m_A, set with it each step
   std::vector<char> m_fixed;                 // per global node
   std::vector<double> m_energy0, m_energy_scale;  // per dynamic body, for the blow-up check
+  // While kinematic bodies are held (hold_kinematic): per kinematic body in
+  // m_rigid order, its scripted velocity and angular velocity.
+  bool m_kinematic_held = false;
+  std::vector<std::pair<Eigen::Vector3d, Eigen::Vector3d>> m_held_scripts;
   std::vector<double> m_elastic;    // per deformable body: elastic energy at the start of the last step (from assembly)
   double m_time = 0.0;
   WorldCounters m_counters;
