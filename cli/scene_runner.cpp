@@ -144,7 +144,10 @@ std::string describe_run_warnings(const RunResult& result) {
   return text + " (not watertight; inside by winding number)";
 }
 
-long frame_step(int frame, double fps, double dt) { return std::lround((frame - 1) / (fps * dt)); }
+long frame_step(int frame, double fps, double dt) {
+  const double steps = (frame - 1) / (fps * dt);
+  return static_cast<long>(std::ceil(steps * (1.0 - 1e-12)));
+}
 
 // The video's frame rate: the scene's over the stride of an evenly spaced
 // selection (every 4th frame of 30 fps plays at 7.5), so it plays in real

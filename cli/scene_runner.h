@@ -70,7 +70,9 @@ std::string describe_run_warnings(const RunResult& result);
 // are written whole, run.json says "interrupted", then Interrupted is thrown.
 RunResult run_scene(const RunJob& job, const GlobalOptions& global);
 
-// Steps at which frame k (1-based) is taken: round((k - 1) / (fps dt)).
+// Steps at which frame k (1-based) is taken: the first step at or after its
+// time (k - 1) / fps (to rounding), so that the step before and this one
+// hold the frame's time between them (its statistics interpolate there).
 long frame_step(int frame, double fps, double dt);
 
 }  // namespace recoil::cli

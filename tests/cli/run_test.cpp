@@ -74,10 +74,11 @@ TEST(RunCommand, RendersTheSelectedFramesAndWritesSpecStats) {
   const json& s = stats[1];
   EXPECT_EQ(s["frame"], 3);
   EXPECT_NEAR(s["time"].get<double>(), 2.0 / 30.0, 1e-12);  // frame k at (k - 1) / fps
-  EXPECT_NEAR(s["sim_time"].get<double>(), 2.0 / 30.0, 0.004 / 2 + 1e-12);
-  // Frame 3 sums the steps between frames 2 and 3 only: frame k is taken
-  // after round((k - 1) / (fps dt)) steps, so 17 - 8 of them.
-  EXPECT_EQ(s["steps"], 9);
+  EXPECT_GE(s["sim_time"].get<double>(), 2.0 / 30.0);
+  EXPECT_LT(s["sim_time"].get<double>(), 2.0 / 30.0 + 0.004);
+  // Frame 3 sums the steps between frames 2 and 3 only: frame k is taken at
+  // the first step at or after its time, ceil((k - 1) / (fps dt)), so 17 - 9 of them.
+  EXPECT_EQ(s["steps"], 8);
   EXPECT_EQ(stats[0]["steps"], 0);  // frame 1 is the initial state
   for (const char* key : {"contacts", "active", "sticking", "sliding"}) EXPECT_TRUE(s[key].is_number_integer()) << key;
   EXPECT_TRUE(s["solver"]["iterations"].is_number_integer());
@@ -97,7 +98,7 @@ TEST(RunCommand, RendersTheSelectedFramesAndWritesSpecStats) {
   for (const char* key : {"kinetic_energy", "elastic_energy", "min_volume_ratio"}) EXPECT_TRUE(bunny[key].is_number()) << key;
   // Falling from rest, both bodies move down at g t at the frame's own time
   // (2/30 s), which lies between two 4 ms steps: the stats are not those of
-  // the nearest step (17, at 0.068 s).
+  // the step the frame shows (17, at 0.068 s).
   std::cout << "bunny velocity at frame 3: " << bunny["velocity"].dump() << "\n";
   for (const json& body : s["bodies"])
     EXPECT_NEAR(body["velocity"][1].get<double>(), -9.81 * 2.0 / 30.0, 1e-9) << body["name"];
@@ -339,6 +340,29 @@ TEST(RunCommand, KinematicBodiesHoldStillWhileTheSceneSettles) {
   // box's at frame 1, reaches it at 0.25 s and pushes it 0.125 m by 0.5 s.
   EXPECT_NEAR(frames.front()["bodies"][0]["com"][0].get<double>(), 0.0, 1e-6);
   EXPECT_NEAR(frames.back()["bodies"][0]["com"][0].get<double>(), 0.125, 0.002);
+}
+
+// stats.jsonl gives each frame's state at the frame's time, between the two
+// steps around it: at 30 fps and dt 4 ms, frame 2 (0.0333 s) lies between
+// steps 8 and 9. It was taken at the nearer step, 8, and extrapolated past
+// it (a ball's kinetic energy came out negative after a bounce).
+TEST(RunCommand, FrameStatisticsLieBetweenTheStepsAroundTheFrameTime) {
+  const fs::path dir = scratch_dir("run_frame_times");
+  const fs::path scene = dir / "fall.json";
+  std::ofstream(scene) << R"({"recoil": 1, "name": "fall", "simulation": {"dt": 0.004, "duration": 0.3},
+    "render": {"fps": 30},
+    "bodies": [{"name": "box", "type": "rigid", "primitive": {"box": [0.1, 0.1, 0.1]}, "transform": {"position": [0, 5, 0]}}]})";
+  const CommandResult r = run_recoil("run " + shell_quote(scene) + " --no-render -q -o " + shell_quote(dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const std::vector<json> frames = read_stats(dir / "out" / "stats.jsonl");
+  ASSERT_EQ(frames.size(), 10u);
+  for (const json& f : frames) {
+    const double time = f["time"].get<double>(), shown = f["sim_time"].get<double>();
+    EXPECT_GE(shown, time - 1e-12) << f.dump();
+    EXPECT_LT(shown - time, 0.004) << f.dump();
+    // In free fall v = -g t at every step, so the interpolated velocity is exact.
+    EXPECT_NEAR(f["bodies"][0]["velocity"][1].get<double>(), -9.81 * time, 1e-9) << f.dump();
+  }
 }
 
 TEST(RunCommand, DivergingSceneExits3NamingFrameAndBodyAndKeepsEarlierFrames) {
