@@ -4,6 +4,7 @@
 #include <cmath>
 #include <filesystem>
 #include <optional>
+#include <limits>
 #include <random>
 
 #include "cli/json_cursor.h"
@@ -29,6 +30,7 @@ struct Source {
   double bottom = 0.0;                               // local min y, after `up`
   double radius = 0.0;                               // bounding sphere of the scaled box, m
   double size = 0.0;                                 // longest side of the scaled box, m
+  sim::Points vertices;                              // #V by 3, local, after `up`, unscaled
 };
 
 // Sizes and places the mesh as it will stand: after its up axis is turned to +Y.
@@ -47,6 +49,7 @@ Source load_source(const std::string& path, UpAxis up, ImportedMeshes* imported)
   s.bottom = box.min.y();
   s.radius = 0.5 * s.scale * box.extent().norm();
   s.size = s.scale * size;
+  s.vertices = mesh.vertices;
   return s;
 }
 
@@ -107,6 +110,9 @@ nlohmann::json build_drop_scene(const DropSettings& settings, ImportedMeshes* im
   list.push_back({{"name", "ground"}, {"type", "plane"}, {"point", {0, 0, 0}}, {"normal", {0, 1, 0}},
                   {"friction", settings.friction}});
   std::mt19937_64 rng(settings.seed);
+  // A pile's lowest point over all its bodies (m), each turned its own way:
+  // the pile moves down as one so that it stands `height` above the ground.
+  double pile_bottom = std::numeric_limits<double>::infinity();
   // Piles stack layers of 2 x 2 cells; side by side is one row along x.
   const int per_layer = pile ? std::min(4, bodies) : bodies;
   const int columns = pile ? (per_layer > 1 ? 2 : 1) : bodies;
@@ -130,6 +136,7 @@ nlohmann::json build_drop_scene(const DropSettings& settings, ImportedMeshes* im
     Eigen::Vector3d position = center - R * (s.scale * s.center);
     // Unrotated bodies rest their lowest point exactly `height` above the ground.
     if (!pile) position.y() = settings.height + settings.height_per_size * s.size - s.scale * s.bottom;
+    else pile_bottom = std::min(pile_bottom, position.y() + s.scale * (s.vertices * R.transpose()).col(1).minCoeff());
     nlohmann::json body = {{"name", pile || sources.size() > 1 ? s.stem + "-" + std::to_string(i + 1) : s.stem},
                            {"mesh", s.path},
                            {"up", to_string(settings.up)},
@@ -150,6 +157,10 @@ nlohmann::json build_drop_scene(const DropSettings& settings, ImportedMeshes* im
     }
     list.push_back(body);
   }
+  if (pile)
+    for (nlohmann::json& body : list)
+      if (body.contains("transform"))
+        body["transform"]["position"][1] = body["transform"]["position"][1].get<double>() + settings.height - pile_bottom;
   std::string name = name_from_stem(fs::path(settings.meshes.front()).stem().string()) + (pile ? "-pile" : "-drop");
   return {{"recoil", 1},
           {"name", name},
