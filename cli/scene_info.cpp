@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "cli/format_number.h"
 #include "cli/scene_parser.h"
 #include "cli/scene_runner.h"
 #include "core/error.h"
@@ -102,10 +103,13 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
     text << std::left;
     text << std::setw(11) << row["type"].get<std::string>();
     if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
-    if (row.contains("collision_triangles") && row["collision_triangles"] != row["surface_triangles"])
-      text << " (collision " << row["collision_triangles"] << ", offset outward by up to "
-           << millimetres(row["collision_offset"].get<double>()) << " mm, "
-           << millimetres(row["collision_below"].get<double>()) << " mm below it)";
+    if (row.contains("collision_triangles") && row["collision_triangles"] != row["surface_triangles"]) {
+      const double below = millimetres(row["collision_below"].get<double>());
+      text << " (collision surface " << row["collision_triangles"] << " triangles, up to "
+           << format_number("%.3g", millimetres(row["collision_offset"].get<double>())) << " mm outside the drawn mesh and "
+           << format_number("%.3g", std::abs(below)) << " mm " << (below >= 0.0 ? "below" : "above")
+           << " its lowest point)";
+    }
     if (row.contains("tets"))
       text << ", " << row["tets"] << " tets, " << row["nodes"] << " nodes";
     if (row.contains("mass")) text << ", mass " << row["mass"].get<double>() << " kg";

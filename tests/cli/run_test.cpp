@@ -453,6 +453,14 @@ TEST(DropCommand, CollisionBudgetIsRecordedAndReported) {
   // How far it reaches below the drawn mesh: some of the offset, never more.
   EXPECT_GE(body["collision_below"].get<double>(), 0.0);
   EXPECT_LE(body["collision_below"].get<double>(), body["collision_offset"].get<double>() + 1e-12);
+  // The text says what the two lengths are.
+  const CommandResult text = run_recoil("info " + shell_quote(dir / "drop.json"));
+  ASSERT_EQ(text.exit_code, 0) << text.err;
+  EXPECT_NE(text.out.find("3674 triangles (collision surface " + std::to_string(body["collision_triangles"].get<int>()) +
+                          " triangles, up to "),
+            std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(" mm outside the drawn mesh and "), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find(" mm below its lowest point)"), std::string::npos) << text.out;
   EXPECT_EQ(run_recoil("drop " + shell_quote(bunny) + " --collision-triangles 800 --collision-edge 0.01").exit_code, 2);
 }
 
