@@ -53,6 +53,18 @@ std::string describe_failure(const sim::StepReport& r, int frame, const std::str
   return s.str();
 }
 
+// What led up to a blow-up, when contact solves failed on the way: how many
+// and how badly, and the remedy that usually holds (a fast impact crosses
+// more than the contact margin in one step); empty when every solve converged.
+std::string after_unconverged_solves(const RunReport& report, const SceneDesc& scene) {
+  const SolveQuality q = report.solve_quality(scene.world.contact.margin);
+  if (q.not_converged == 0) return {};
+  return " after " + std::to_string(q.not_converged) + " of " + std::to_string(q.steps) +
+         " steps ended with a contact solve that did not converge (worst KKT residual " +
+         format_number("%.3g", q.worst_kkt) + " m/s); a smaller simulation.dt (now " +
+         format_number("%g", scene.world.dt) + " s) gives a fast impact more steps";
+}
+
 // How far a deformable body's own weight alone strains it, resting on its
 // base: density * |g| * height / E, its height along gravity at rest. Told
 // when its elements invert and it is past a tenth, where a material stops
@@ -308,7 +320,7 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
                                          std::to_string(sim::kMaxCandidatesPerVertex) +
                                          " per surface vertex (the bodies crossed or folded through themselves; "
                                          "a smaller dt or a stiffer material holds them)"
-                                   : "energy blew up (diverged)";
+                                   : "energy blew up (diverged)" + after_unconverged_solves(report, scene);
       result.message = describe_failure(r, frame, what, scene);
     } else if (r.status == sim::StepStatus::inverted && inverted_steps > grace_steps) {
       result.failed = true;
