@@ -295,7 +295,10 @@ void parse_body(const JsonCursor& body, int index, const fs::path& base_dir, Bod
   const std::vector<std::string> allowed = keys_for(kind);
   for (const auto& [key, value] : body.value().items())
     if (std::find(allowed.begin(), allowed.end(), key) == allowed.end())
-      body.child(key).fail("not allowed for a " + std::string(scene_type_name(kind)) + " body");
+      body.child(key).fail("not allowed for a " + std::string(scene_type_name(kind)) + " body" +
+                           (kind == sim::BodyKind::kinematic && (key == "velocity" || key == "angular_velocity")
+                                ? std::string("; a kinematic body moves by its \"motion\": {\"") + key + "\": ...}"
+                                : std::string()));
 
   SceneBody out;
   out.kind = kind;
