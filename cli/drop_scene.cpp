@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <optional>
 #include <limits>
+#include <optional>
 #include <random>
 
 #include "cli/json_cursor.h"
@@ -158,9 +158,11 @@ nlohmann::json build_drop_scene(const DropSettings& settings, ImportedMeshes* im
     list.push_back(body);
   }
   if (pile)
-    for (nlohmann::json& body : list)
-      if (body.contains("transform"))
-        body["transform"]["position"][1] = body["transform"]["position"][1].get<double>() + settings.height - pile_bottom;
+    for (nlohmann::json& body : list) {
+      if (!body.contains("transform")) continue;
+      nlohmann::json& y = body["transform"]["position"][1];
+      y = y.get<double>() + settings.height - pile_bottom;
+    }
   std::string name = name_from_stem(fs::path(settings.meshes.front()).stem().string()) + (pile ? "-pile" : "-drop");
   return {{"recoil", 1},
           {"name", name},

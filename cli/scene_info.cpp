@@ -105,8 +105,9 @@ int print_scene_info(const std::filesystem::path& file, bool as_json) {
     if (row.contains("surface_triangles")) text << row["surface_triangles"] << " triangles";
     if (row.contains("collision_triangles") && row["collision_triangles"] != row["surface_triangles"]) {
       const double below = millimetres(row["collision_below"].get<double>());
+      const double outside = millimetres(row["collision_offset"].get<double>());
       text << " (collision surface " << row["collision_triangles"] << " triangles, up to "
-           << format_number("%.3g", millimetres(row["collision_offset"].get<double>())) << " mm outside the drawn mesh and "
+           << format_number("%.3g", outside) << " mm outside the drawn mesh and "
            << format_number("%.3g", std::abs(below)) << " mm " << (below >= 0.0 ? "below" : "above")
            << " its lowest point)";
     }

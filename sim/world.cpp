@@ -167,7 +167,8 @@ void World::reset_energy_reference() {
   double drive = 0.0;
   for (const RigidBody& body : m_rigid)
     if (body.kind == BodyKind::kinematic)
-      drive = std::max(drive, body.velocity.norm() + body.angular_velocity.norm() * body.local.rowwise().norm().maxCoeff());
+      drive = std::max(drive, body.velocity.norm() +
+                                  body.angular_velocity.norm() * body.local.rowwise().norm().maxCoeff());
   // Per body: kg; J of kinetic and elastic energy; J that gravity releases over a fall of 10 body sizes.
   std::vector<double> mass(count, 0.0), held(count, 0.0), fall(count, 0.0);
   const std::vector<BodyStats> stats = this->stats();

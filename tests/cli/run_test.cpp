@@ -324,11 +324,13 @@ TEST(RunCommand, TheRollersExampleDrawsTheBallThroughTheGap) {
 TEST(RunCommand, KinematicBodiesHoldStillWhileTheSceneSettles) {
   const fs::path dir = scratch_dir("run_settle_kinematic");
   const fs::path scene = dir / "paddle.json";
-  std::ofstream(scene) << R"({"recoil": 1, "name": "paddle", "simulation": {"dt": 0.002, "duration": 0.5, "settle": 1.0},
+  std::ofstream(scene) << R"({"recoil": 1, "name": "paddle",
+    "simulation": {"dt": 0.002, "duration": 0.5, "settle": 1.0},
     "bodies": [{"name": "floor", "type": "plane"},
       {"name": "paddle", "type": "kinematic", "primitive": {"box": [0.05, 0.2, 0.4]},
        "transform": {"position": [-0.2, 0.1005, 0]}, "motion": {"velocity": [0.5, 0, 0]}},
-      {"name": "box", "type": "rigid", "primitive": {"box": [0.1, 0.1, 0.1]}, "transform": {"position": [0, 0.0505, 0]}}]})";
+      {"name": "box", "type": "rigid", "primitive": {"box": [0.1, 0.1, 0.1]},
+       "transform": {"position": [0, 0.0505, 0]}}]})";
   const CommandResult r = run_recoil("run " + shell_quote(scene) + " --no-render -q -o " + shell_quote(dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   EXPECT_EQ(r.err.find("still moving"), std::string::npos) << r.err;
@@ -351,7 +353,8 @@ TEST(RunCommand, FrameStatisticsLieBetweenTheStepsAroundTheFrameTime) {
   const fs::path scene = dir / "fall.json";
   std::ofstream(scene) << R"({"recoil": 1, "name": "fall", "simulation": {"dt": 0.004, "duration": 0.3},
     "render": {"fps": 30},
-    "bodies": [{"name": "box", "type": "rigid", "primitive": {"box": [0.1, 0.1, 0.1]}, "transform": {"position": [0, 5, 0]}}]})";
+    "bodies": [{"name": "box", "type": "rigid", "primitive": {"box": [0.1, 0.1, 0.1]},
+                "transform": {"position": [0, 5, 0]}}]})";
   const CommandResult r = run_recoil("run " + shell_quote(scene) + " --no-render -q -o " + shell_quote(dir / "out"));
   ASSERT_EQ(r.exit_code, 0) << r.err;
   const std::vector<json> frames = read_stats(dir / "out" / "stats.jsonl");
@@ -456,8 +459,8 @@ TEST(DropCommand, CollisionBudgetIsRecordedAndReported) {
   // The text says what the two lengths are.
   const CommandResult text = run_recoil("info " + shell_quote(dir / "drop.json"));
   ASSERT_EQ(text.exit_code, 0) << text.err;
-  EXPECT_NE(text.out.find("3674 triangles (collision surface " + std::to_string(body["collision_triangles"].get<int>()) +
-                          " triangles, up to "),
+  const std::string triangles = std::to_string(body["collision_triangles"].get<int>());
+  EXPECT_NE(text.out.find("3674 triangles (collision surface " + triangles + " triangles, up to "),
             std::string::npos) << text.out;
   EXPECT_NE(text.out.find(" mm outside the drawn mesh and "), std::string::npos) << text.out;
   EXPECT_NE(text.out.find(" mm below its lowest point)"), std::string::npos) << text.out;

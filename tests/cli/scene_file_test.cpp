@@ -184,7 +184,8 @@ TEST(SceneFile, BadSceneCorpusGivesExit2NamingFileAndPointer) {
        {"/render/camera/azimuth: has no effect on a camera at a given position; give position or azimuth"}},
       {"scale-type.json", {"/bodies/1/transform/scale: expected a number or an array of 3 numbers, got a boolean"}},
       {"kinematic-velocity.json",
-       {"/bodies/1/velocity: not allowed for a kinematic body; a kinematic body moves by its \"motion\": {\"velocity\""}},
+       {"/bodies/1/velocity: not allowed for a kinematic body;",
+        "a kinematic body moves by its \"motion\": {\"velocity\""}},
   };
   const fs::path out = scratch_dir("bad_scenes");
   for (const BadScene& bad : corpus) {

@@ -127,8 +127,8 @@ TEST(WorldRigid, AStruckOrPushedBodyInZeroGravityIsNoBlowUp) {
     const BodyStats& struck = stats.back();
     Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
     for (const BodyStats& b : stats) momentum += b.momentum;
-    std::cout << (paddle ? "pushed by a paddle" : "struck") << " in zero g: struck box at " << struck.momentum.x() / struck.mass
-              << " m/s, total momentum " << momentum.transpose() << " kg m/s\n";
+    std::cout << (paddle ? "pushed by a paddle" : "struck") << " in zero g: struck box at "
+              << struck.momentum.x() / struck.mass << " m/s, total momentum " << momentum.transpose() << " kg m/s\n";
     EXPECT_GT(struck.momentum.x() / struck.mass, 0.5);
     // Between two dynamic bodies nothing else acts: momentum stays 2 m/s times the striker's mass.
     if (!paddle) {
