@@ -169,25 +169,17 @@ void World::reset_energy_reference() {
     if (body.kind == BodyKind::kinematic)
       drive = std::max(drive, body.velocity.norm() +
                                   body.angular_velocity.norm() * body.local.rowwise().norm().maxCoeff());
-  // Per body: kg; J of kinetic and elastic energy; J that gravity releases over a fall of 10 body sizes.
-  std::vector<double> mass(count, 0.0), held(count, 0.0), fall(count, 0.0);
+  // Per body: J of kinetic and elastic energy; J that gravity releases over a fall of 10 body sizes.
+  std::vector<double> held(count, 0.0), fall(count, 0.0);
   const std::vector<BodyStats> stats = this->stats();
   for (size_t i = 0; i < count; ++i) {
     const DynamicBody body = dynamic_body(static_cast<int>(i));
-    double elastic = 0.0;
-    Aabb box;
-    if (body.deformable) {
-      elastic = elastic_state(*body.deformable, m_x, /*with_energy=*/true).energy;
-      m_elastic[i] = elastic;
-      box = bounding_box(body.deformable->surface);
-      mass[i] = body.deformable->mass.sum();
-    } else {
-      box = bounding_box(body.rigid->local);
-      mass[i] = body.rigid->mass;
-    }
+    const double elastic = stats[i].elastic_energy;  // J, zero for rigid bodies
+    if (body.deformable) m_elastic[i] = elastic;
+    const Aabb box = body.deformable ? bounding_box(body.deformable->surface) : bounding_box(body.rigid->local);
     m_energy0[i] = total_energy(static_cast<int>(i), elastic);
     held[i] = stats[i].kinetic_energy + elastic;
-    fall[i] = mass[i] * m_gravity.norm() * 10.0 * (box.valid() ? box.extent().norm() : 1.0);
+    fall[i] = stats[i].mass * m_gravity.norm() * 10.0 * (box.valid() ? box.extent().norm() : 1.0);
   }
   const double all = std::accumulate(held.begin(), held.end(), 0.0) + std::accumulate(fall.begin(), fall.end(), 0.0);
   for (size_t i = 0; i < count; ++i) {
@@ -197,7 +189,7 @@ void World::reset_energy_reference() {
     // it (2 m V^2: a bounce off a surface moving at V); a floor for bodies
     // at rest in zero g.
     m_energy_scale[i] = std::abs(m_energy0[i]) + fall[i] + (all - held[i] - fall[i]) +
-                        2.0 * mass[i] * drive * drive + mass[i] * 1e-6;
+                        2.0 * stats[i].mass * drive * drive + stats[i].mass * 1e-6;
   }
 }
 
