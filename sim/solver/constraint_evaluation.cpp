@@ -42,10 +42,6 @@ void switch_off(Proposal& p) {
   p.mode_change = p.accept = true;
 }
 
-// Whether a contact's two sides were at rest relative to each other as the
-// step began: its slip at dv = 0, -rhs_tangent, is below epsilon_2.
-bool at_rest(const ContactRows& rows, const Evaluation& e) { return rows.rhs_tangent.norm() <= e.eps2; }
-
 // Algorithm 2, lines 7-8 (seed): a penetrating inactive contact is activated,
 // in kinetic friction, its slip along the tangential velocity u (none yet
 // when u is below epsilon_2, or when its sides were at rest: reverses()).
@@ -55,7 +51,7 @@ Proposal activate(const ContactRows& rows, const ContactState& s, const Eigen::V
   p.state.mode = ContactMode::sliding;
   p.state.lambda_kinetic = 0.0;
   const double speed = u.norm();
-  p.state.slip = speed > e.eps2 && !at_rest(rows, e) ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
+  p.state.slip = speed > e.eps2 && !sides_at_rest(rows, e.eps2) ? Eigen::Vector2d(u / speed) : Eigen::Vector2d::Zero();
   p.f.setZero();
   p.mode_change = p.accept = true;
   p.depth = -slack;
@@ -98,7 +94,7 @@ bool reverses(const ContactRows& rows, const ContactState& s, const Eigen::Vecto
               Proposal& p) {
   const bool undirected = s.slip.squaredNorm() == 0.0;
   const double speed = u.norm();
-  const bool reversed = undirected ? speed <= e.eps2 || at_rest(rows, e)
+  const bool reversed = undirected ? speed <= e.eps2 || sides_at_rest(rows, e.eps2)
                                    : (u.dot(s.slip) < -e.eps2 && u.dot(s.slip) < -e.policy.reversal * speed);
   const bool can_stick = rows.mu_static > 0.0;
   if (!can_stick || !reversed) return false;

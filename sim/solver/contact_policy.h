@@ -6,10 +6,10 @@
 // measurements behind each value. Shares and cosines are plain numbers.
 // Two rules have no number: sticking/sliding changes and Algorithm 3 wait
 // for a converged evaluation (a half-converged iterate cycled); and static
-// friction acts on contacts whose sides are at relative rest (one comes on
-// without a slip direction and sticks at the converged evaluation, and one
-// that breaks away keeps mu_static until its slip starts:
-// ContactState::impending). Algorithm 3's extrapolation keeps its own depth
+// friction acts on contacts whose sides are at relative rest (one that comes
+// on, or begins a step still sliding, has no slip direction and sticks at
+// the converged evaluation, and one that breaks away keeps mu_static until
+// its slip starts: ContactState::impending). Algorithm 3's extrapolation keeps its own depth
 // (FrictionAcceleration::kDepth).
 
 namespace recoil::sim {

@@ -69,6 +69,10 @@ double normal_rows_product(const ContactRows& a, const NormalRowModes& modes_a, 
 // rows without a shared DoF node can have.
 double normal_row_rigid_part(const NormalRowModes& modes, const MomentumPreconditioner& P);
 
+// Whether a contact's two sides were at rest relative to each other as the
+// step began: its slip at dv = 0, -rhs_tangent, is within eps2 (m/s).
+inline bool sides_at_rest(const ContactRows& rows, double eps2) { return rows.rhs_tangent.norm() <= eps2; }
+
 // The friction coefficient of a sliding contact: mu_static while its slip
 // has not started (ContactState::impending), mu_kinetic after.
 double sliding_mu(const ContactRows& rows, const ContactState& state);

@@ -114,6 +114,15 @@ void CrSolver::start_from_warm_states() {
     if (s.mode == ContactMode::sliding) {
       s.lambda_kinetic = std::max(s.lambda_kinetic, 0.0);
       s.slip = s.slip.norm() > 0.0 ? Eigen::Vector2d(s.slip.normalized()) : Eigen::Vector2d::Zero();
+      // A contact whose sides are at rest is no longer slipping: like one
+      // that comes on at rest, it starts without a slip direction, and the
+      // converged evaluation makes it stick (static friction then decides).
+      // Kept sliding, it would push its friction impulse at the cone's rim
+      // into whatever holds it still, step after step.
+      if (sides_at_rest(rows, m_settings.constraint_tolerance)) {
+        s.slip.setZero();
+        s.impending = false;
+      }
     }
     if (s.mode != ContactMode::inactive) m_y[m_n + 3 * k] = s.lambda;
     if (s.mode == ContactMode::sticking) m_y.segment<2>(m_n + 3 * k + 1) = s.gamma;

@@ -6,6 +6,7 @@
 // (cos theta, -sin theta, 0).
 #include <cmath>
 #include <string>
+#include <vector>
 
 #include "sim/geometry/mesh_import.h"
 #include "sim/geometry/primitives.h"
@@ -128,6 +129,25 @@ inline WorldDesc touching_cube_stack(int count) {
     w.rigid_bodies.push_back(rigid_box("box" + std::to_string(i), Eigen::Vector3d::Constant(kBenchCube),
                                        Eigen::Vector3d(0.0, (i + 0.5) * kBenchCube, 0.0), friction(0.5, 0.5),
                                        kBenchDensity));
+  return w;
+}
+
+// A pyramid of rigid cubes (edge kBenchCube, density kBenchDensity, mu 0.5,
+// the scene primitive's 8 x 8 cells a face) on the ground: `rows[0]` cubes
+// side by side `gap` m apart, each row above resting exactly touching on the
+// two below it, centred on the gap between them.
+inline WorldDesc box_pyramid(const std::vector<int>& rows, double gap, double dt) {
+  WorldDesc w = base_world(dt);
+  w.planes.push_back(ground(friction(0.5, 0.5)));
+  for (size_t row = 0; row < rows.size(); ++row)
+    for (int i = 0; i < rows[row]; ++i) {
+      const double x = (i - 0.5 * (rows[row] - 1)) * (kBenchCube + gap);
+      w.rigid_bodies.push_back(rigid_box("box" + std::to_string(row) + "_" + std::to_string(i),
+                                         Eigen::Vector3d::Constant(kBenchCube),
+                                         Eigen::Vector3d(x, (row + 0.5) * kBenchCube, 0.0), friction(0.5, 0.5),
+                                         kBenchDensity));
+      w.rigid_bodies.back().mesh = make_box(Eigen::Vector3d::Constant(kBenchCube), 8);
+    }
   return w;
 }
 
