@@ -1,7 +1,7 @@
 #pragma once
 // The options `run` and `drop` share: output folder, frame
-// selection, solver, statistics, video, resume, threads, and the render
-// options. Options given on the command line override the scene's values;
+// selection, time step, solver, statistics, video, resume, threads, and the
+// render options. Options given on the command line override the scene's values;
 // the overrides are recorded in the resolved scene (DIR/scene.json).
 #include <CLI/CLI.hpp>
 #include <string>
@@ -15,6 +15,7 @@ namespace recoil::cli {
 struct RunOptions {
   std::string output;
   std::string frames;      // --frames SPEC
+  double dt = 0.0;         // s (0: the scene's simulation.dt)
   std::string solver;      // cr | pgs | cr-plain (empty: the scene's)
   bool no_render = false;
   std::string stats;

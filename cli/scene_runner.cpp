@@ -61,7 +61,7 @@ std::string after_unconverged_solves(const RunReport& report, const SceneDesc& s
   if (q.not_converged == 0) return {};
   return " after " + std::to_string(q.not_converged) + " of " + std::to_string(q.steps) +
          " steps ended with a contact solve that did not converge (worst KKT residual " +
-         format_number("%.3g", q.worst_kkt) + " m/s); a smaller simulation.dt (now " +
+         format_number("%.3g", q.worst_kkt) + " m/s); a smaller time step (--dt, or simulation.dt in a scene file; now " +
          format_number("%g", scene.world.dt) + " s) gives a fast impact more steps";
 }
 

@@ -1,5 +1,6 @@
-// When a run takes its frames: a settle before frame 1 with kinematic
-// bodies held, and each frame's statistics at the frame's own time.
+// When a run takes its frames and steps: a settle before frame 1 with
+// kinematic bodies held, each frame's statistics at the frame's own time,
+// and the time step --dt sets.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -62,6 +63,28 @@ TEST(RunCommand, FrameStatisticsLieBetweenTheStepsAroundTheFrameTime) {
     // In free fall v = -g t at every step, so the interpolated velocity is exact.
     EXPECT_NEAR(f["bodies"][0]["velocity"][1].get<double>(), -9.81 * time, 1e-9) << f.dump();
   }
+}
+
+// --dt overrides the scene's time step, and the record says so: the run
+// takes duration / dt steps and scene.json holds the step it ran with.
+TEST(RunCommand, TimeStepOptionOverridesTheScene) {
+  const fs::path dir = scratch_dir("run_dt_option");
+  const fs::path scene = dir / "fall.json";
+  std::ofstream(scene) << R"({"recoil": 1, "name": "fall", "simulation": {"dt": 0.004, "duration": 0.2},
+    "bodies": [{"name": "box", "type": "rigid", "primitive": {"box": [0.1, 0.1, 0.1]},
+                "transform": {"position": [0, 5, 0]}}]})";
+  const CommandResult r =
+      run_recoil("run " + shell_quote(scene) + " --dt 0.001 --no-render -q -o " + shell_quote(dir / "out"));
+  ASSERT_EQ(r.exit_code, 0) << r.err;
+  const json run = json::parse(file_bytes(dir / "out" / "run.json"));
+  EXPECT_EQ(run["dt"].get<double>(), 0.001);
+  EXPECT_EQ(run["steps"].get<long>(), 200);
+  const json resolved = json::parse(file_bytes(dir / "out" / "scene.json"));
+  EXPECT_EQ(resolved["simulation"]["dt"].get<double>(), 0.001);
+  const CommandResult refused = run_recoil("run " + shell_quote(scene) + " --dt 0 --no-render -q -o " +
+                                           shell_quote(dir / "refused"));
+  EXPECT_EQ(refused.exit_code, 2) << refused.err;
+  EXPECT_NE(refused.err.find("--dt"), std::string::npos) << refused.err;
 }
 
 }  // namespace
