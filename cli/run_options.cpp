@@ -93,8 +93,8 @@ void add_run_options(CLI::App& command, RunOptions& options) {
           },
           "SPEC"));
   command.add_option("--dt", options.dt,
-                     "Time step in seconds (default: the scene's simulation.dt, 0.004 for drop); a smaller one gives a "
-                     "fast impact more steps")
+                     "Time step in seconds (default: the scene's simulation.dt; 0.004 for drop and turntable); "
+                     "a smaller one gives a fast impact more steps")
       ->check(NumberIn(kTimeStepRange.lo, kTimeStepRange.hi));
   command.add_option("--solver", options.solver, "Contact solver (default: the scene's)")
       ->check(CLI::IsMember({"cr", "pgs", "cr-plain"}));

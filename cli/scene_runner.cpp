@@ -61,7 +61,8 @@ std::string after_unconverged_solves(const RunReport& report, const SceneDesc& s
   if (q.not_converged == 0) return {};
   return " after " + std::to_string(q.not_converged) + " of " + std::to_string(q.steps) +
          " steps ended with a contact solve that did not converge (worst KKT residual " +
-         format_number("%.3g", q.worst_kkt) + " m/s); a smaller time step (--dt, or simulation.dt in a scene file; now " +
+         format_number("%.3g", q.worst_kkt) +
+         " m/s); a smaller time step (--dt, or simulation.dt in a scene file; now " +
          format_number("%g", scene.world.dt) + " s) gives a fast impact more steps";
 }
 
@@ -318,8 +319,8 @@ RunResult run_scene(const RunJob& job, const GlobalOptions& global) {
                                : r.status == sim::StepStatus::runaway
                                    ? std::to_string(r.contacts) + " contact candidates, more than " +
                                          std::to_string(sim::kMaxCandidatesPerVertex) +
-                                         " per surface vertex (the bodies crossed or folded through themselves; "
-                                         "a smaller dt or a stiffer material holds them)"
+                                         " per surface vertex (the bodies crossed or folded through themselves; a "
+                                         "smaller time step (--dt, or simulation.dt) or a stiffer material holds them)"
                                    : "energy blew up (diverged)" + after_unconverged_solves(report, scene);
       result.message = describe_failure(r, frame, what, scene);
     } else if (r.status == sim::StepStatus::inverted && inverted_steps > grace_steps) {

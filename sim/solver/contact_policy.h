@@ -7,10 +7,11 @@
 // Two rules have no number: sticking/sliding changes and Algorithm 3 wait
 // for a converged evaluation (a half-converged iterate cycled); and static
 // friction acts on contacts whose sides are at relative rest (one that comes
-// on, or begins a step still sliding, has no slip direction and sticks at
-// the converged evaluation, and one that breaks away keeps mu_static until
-// its slip starts: ContactState::impending). Algorithm 3's extrapolation keeps its own depth
-// (FrictionAcceleration::kDepth).
+// on at rest has no slip direction and sticks at the converged evaluation;
+// one that breaks away keeps mu_static until its slip starts:
+// ContactState::impending; one still sliding when a step begins with its
+// sides at rest starts the step sticking). Algorithm 3's extrapolation keeps
+// its own depth (FrictionAcceleration::kDepth).
 
 namespace recoil::sim {
 

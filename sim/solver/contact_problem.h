@@ -56,7 +56,8 @@ struct ContactState {
   // Sliding only: broken away from sticking, with no slip yet (u below
   // epsilon_2). Its friction is the static limit, mu_static lambda': kinetic
   // friction acts on a contact that slips, so one whose neighbours still
-  // hold it keeps the static share of the load.
+  // hold it keeps the static share of the load. A step that begins with its
+  // sides still at rest starts it sticking again (cr_solver.cpp).
   bool impending = false;
 };
 

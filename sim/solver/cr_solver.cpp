@@ -114,12 +114,15 @@ void CrSolver::start_from_warm_states() {
     if (s.mode == ContactMode::sliding) {
       s.lambda_kinetic = std::max(s.lambda_kinetic, 0.0);
       s.slip = s.slip.norm() > 0.0 ? Eigen::Vector2d(s.slip.normalized()) : Eigen::Vector2d::Zero();
-      // A contact whose sides are at rest is no longer slipping: like one
-      // that comes on at rest, it starts without a slip direction, and the
-      // converged evaluation makes it stick (static friction then decides).
-      // Kept sliding, it would push its friction impulse at the cone's rim
-      // into whatever holds it still, step after step.
-      if (sides_at_rest(rows, m_settings.constraint_tolerance)) {
+      // A contact whose sides are at rest is no longer slipping, so Coulomb's
+      // law is static again: it starts the step sticking, warm-started with
+      // the impulse its friction applied, and the cone test decides whether
+      // it breaks away. Kept sliding, it would push that impulse, at the
+      // cone's rim, into whatever holds it still, step after step.
+      if (rows.mu_static > 0.0 && sides_at_rest(rows, m_settings.constraint_tolerance)) {
+        s.gamma = tangent_impulse(rows, s);
+        s.mode = ContactMode::sticking;
+        s.lambda_kinetic = 0.0;
         s.slip.setZero();
         s.impending = false;
       }

@@ -6,7 +6,6 @@
 // (cos theta, -sin theta, 0).
 #include <cmath>
 #include <string>
-#include <vector>
 
 #include "sim/geometry/mesh_import.h"
 #include "sim/geometry/primitives.h"
@@ -34,11 +33,13 @@ inline PlaneDesc incline(double theta, FrictionDesc f) {
 inline Eigen::Vector3d incline_normal(double theta) { return {std::sin(theta), std::cos(theta), 0.0}; }
 inline Eigen::Vector3d downslope(double theta) { return {std::cos(theta), -std::sin(theta), 0.0}; }
 
+// `cells`: of each face's grid a side (1: the corners alone; the scene
+// primitive has 8).
 inline RigidBodyDesc rigid_box(const std::string& name, const Eigen::Vector3d& size, const Eigen::Vector3d& position,
-                               FrictionDesc f = {}, double density = 1000.0) {
+                               FrictionDesc f = {}, double density = 1000.0, int cells = 1) {
   RigidBodyDesc b;
   b.name = name;
-  b.mesh = make_box(size, 1);
+  b.mesh = make_box(size, cells);
   b.transform.position = position;
   b.density = density;
   b.friction = f;
@@ -133,20 +134,19 @@ inline WorldDesc touching_cube_stack(int count) {
 }
 
 // A pyramid of rigid cubes (edge kBenchCube, density kBenchDensity, mu 0.5,
-// the scene primitive's 8 x 8 cells a face) on the ground: `rows[0]` cubes
-// side by side `gap` m apart, each row above resting exactly touching on the
-// two below it, centred on the gap between them.
-inline WorldDesc box_pyramid(const std::vector<int>& rows, double gap, double dt) {
+// the scene primitive's 8 x 8 cells a face) on the ground: `base` cubes side
+// by side `gap` m apart, and each row above one cube shorter, every cube
+// resting exactly touching on the two below it.
+inline WorldDesc box_pyramid(int base, double gap, double dt) {
   WorldDesc w = base_world(dt);
   w.planes.push_back(ground(friction(0.5, 0.5)));
-  for (size_t row = 0; row < rows.size(); ++row)
-    for (int i = 0; i < rows[row]; ++i) {
-      const double x = (i - 0.5 * (rows[row] - 1)) * (kBenchCube + gap);
+  for (int row = 0; row < base; ++row)
+    for (int i = 0; i < base - row; ++i) {
+      const double x = (i - 0.5 * (base - row - 1)) * (kBenchCube + gap);
       w.rigid_bodies.push_back(rigid_box("box" + std::to_string(row) + "_" + std::to_string(i),
                                          Eigen::Vector3d::Constant(kBenchCube),
                                          Eigen::Vector3d(x, (row + 0.5) * kBenchCube, 0.0), friction(0.5, 0.5),
-                                         kBenchDensity));
-      w.rigid_bodies.back().mesh = make_box(Eigen::Vector3d::Constant(kBenchCube), 8);
+                                         kBenchDensity, 8));
     }
   return w;
 }
