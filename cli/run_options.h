@@ -1,8 +1,8 @@
 #pragma once
-// The options `run` and `drop` share: output folder, frame
+// The options `run`, `drop` and `turntable` share: output folder, frame
 // selection, time step, solver, statistics, video, resume, threads, and the
-// render options. Options given on the command line override the scene's values;
-// the overrides are recorded in the resolved scene (DIR/scene.json).
+// render options. Options given on the command line override the scene's
+// values; the overrides are recorded in the resolved scene (DIR/scene.json).
 #include <CLI/CLI.hpp>
 #include <string>
 
