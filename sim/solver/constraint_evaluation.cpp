@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <optional>
 
@@ -9,6 +10,7 @@
 
 #include "core/check.h"
 #include "sim/solver/contact_rows_ops.h"
+#include "sim/solver/dependent_normal_rows.h"
 #include "sim/solver/taken_normal_rows.h"
 
 namespace recoil::sim {
@@ -34,6 +36,9 @@ struct Proposal {
 };
 
 Proposal unchanged(const ContactState& s, const Eigen::Vector3d& f) { return Proposal{-1, s, f, false, false}; }
+
+// Coefficients of a dependence below this share of the largest are rounding.
+constexpr double kCoefficientRounding = 1e-9;
 
 // Proposal p switched off.
 void switch_off(Proposal& p) {
@@ -147,14 +152,73 @@ Proposal evaluate_active(const ContactRows& rows, const ContactState& s, const E
   return p;
 }
 
+// The proposal index per contact (-1: none), for the exchange below.
+std::vector<int> proposal_index(size_t contacts, const std::vector<Proposal>& proposals) {
+  std::vector<int> index(contacts, -1);
+  for (size_t i = 0; i < proposals.size(); ++i) index[static_cast<size_t>(proposals[i].contact)] = static_cast<int>(i);
+  return index;
+}
+
+// Activation k's normal row depends on on rows t (row_k = sum c_t row_t) and
+// stays violated with all of them at equality: one of them makes way. The
+// multipliers move along the null-space direction (+delta on k, -c_t delta
+// on each t), which changes no impulse, until the first lambda_t with
+// c_t > 0 reaches zero; that row switches off, and with every row but it at
+// equality its slack is mismatch / c_t > 0. Returns false, and k waits,
+// when no active row can make way: a row switched on by this evaluation
+// (lambda 0, kept: it is deeper), or none with c_t > 0 (the rows together
+// admit no dv at all, as for a body pinched from both sides).
+bool exchange(const ContactProblem& problem, const NormalRowDependence& d, int k, Eigen::VectorXd& y, int n,
+              std::vector<Proposal>& proposals, std::vector<int>& index, OnNormalRows& on) {
+  double largest = 0.0;
+  for (double c : d.coefficients) largest = std::max(largest, std::abs(c));
+  int leaving = -1;
+  double delta = std::numeric_limits<double>::infinity();
+  for (size_t i = 0; i < d.contacts.size(); ++i) {
+    const int t = d.contacts[i];
+    const double c = d.coefficients[i];
+    if (!(c > kCoefficientRounding * largest)) continue;
+    if (problem.states[static_cast<size_t>(t)].mode == ContactMode::inactive) return false;
+    const double ratio = std::max(y[n + 3 * t], 0.0) / c;
+    if (ratio < delta) {
+      delta = ratio;
+      leaving = t;
+    }
+  }
+  if (leaving < 0) return false;
+  const auto set_lambda = [&](int contact, double lambda) {
+    y[n + 3 * contact] = lambda;
+    const int p = index[static_cast<size_t>(contact)];
+    if (p >= 0) proposals[static_cast<size_t>(p)].f[0] = lambda;
+  };
+  for (size_t i = 0; i < d.contacts.size(); ++i) {
+    const int t = d.contacts[i];
+    set_lambda(t, std::max(y[n + 3 * t], 0.0) - d.coefficients[i] * delta);
+  }
+  set_lambda(k, delta);
+  if (index[static_cast<size_t>(leaving)] < 0) {
+    index[static_cast<size_t>(leaving)] = static_cast<int>(proposals.size());
+    proposals.push_back(unchanged(problem.states[static_cast<size_t>(leaving)], y.segment<3>(n + 3 * leaving)));
+    proposals.back().contact = leaving;
+  }
+  switch_off(proposals[static_cast<size_t>(index[static_cast<size_t>(leaving)])]);
+  y.segment<3>(n + 3 * leaving).setZero();
+  on.remove(leaving);
+  return true;
+}
+
 // Policy (parallel) on the activations of one evaluation: the deepest goes
 // first, and one whose normal row is within `parallel` of a row already
 // taken waits. Mid-solve the active rows count as taken too; at a converged
 // evaluation they do not, or a contact beside a loaded one could never come
-// on. `proposals` holds the proposing contacts only, in ascending contact
-// order.
+// on. Then an activation whose row depends on the rows that stay on
+// (dependent_normal_rows.h) comes on only where their right-hand sides
+// agree with its own to epsilon_2, or by exchange() where they leave it
+// violated; one they already satisfy waits. `proposals` holds the proposing
+// contacts only, in ascending contact order.
 void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>& inverse_masses,
-               const MomentumPreconditioner& P, const Evaluation& e, std::vector<Proposal>& proposals) {
+               const MomentumPreconditioner& P, const Evaluation& e, Eigen::VectorXd& y, int n,
+               std::vector<Proposal>& proposals) {
   std::vector<int> order;  // indices into `proposals`: the activations, deepest first
   for (size_t i = 0; i < proposals.size(); ++i) {
     const Proposal& p = proposals[i];
@@ -169,12 +233,28 @@ void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>
   if (!e.converged)
     for (size_t k = 0; k < problem.states.size(); ++k)
       if (problem.states[k].mode != ContactMode::inactive) taken.take(static_cast<int>(k));
+  std::vector<int> index = proposal_index(problem.states.size(), proposals);
+  OnNormalRows on(problem, P);
+  for (size_t k = 0; k < problem.states.size(); ++k) {
+    if (problem.states[k].mode == ContactMode::inactive) continue;
+    const int p = index[k];
+    const bool leaves = p >= 0 && proposals[static_cast<size_t>(p)].accept &&
+                        proposals[static_cast<size_t>(p)].state.mode == ContactMode::inactive;
+    if (!leaves) on.add(static_cast<int>(k));
+  }
   for (int i : order) {
-    Proposal& p = proposals[static_cast<size_t>(i)];
-    if (taken.parallel_to_taken(p.contact)) {
-      p.accept = false;
+    const int k = proposals[static_cast<size_t>(i)].contact;
+    bool waits = taken.parallel_to_taken(k);
+    if (!waits) {
+      const NormalRowDependence d = on.dependence(k);
+      if (d.dependent && std::abs(d.mismatch) > e.eps2)
+        waits = d.mismatch < 0.0 || !exchange(problem, d, k, y, n, proposals, index, on);
+    }
+    if (waits) {
+      proposals[static_cast<size_t>(i)].accept = false;
     } else {
-      taken.take(p.contact);
+      taken.take(k);
+      on.add(k);
     }
   }
 }
@@ -274,7 +354,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vecto
     p.contact = k;
     if (p.accept) proposals.push_back(p);
   }
-  hold_back(problem, inverse_masses, P, e, proposals);
+  hold_back(problem, inverse_masses, P, e, y, n, proposals);
   if (converged) {
     std::optional<FrictionAcceleration> fresh;  // for an evaluation that keeps no pairs
     if (acceleration == nullptr) acceleration = &fresh.emplace();

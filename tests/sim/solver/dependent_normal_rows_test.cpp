@@ -1,0 +1,117 @@
+// A rigid box resting on its four bottom corners, and a fifth contact at the
+// middle of its bottom face: that row is the corners' average, so it depends
+// on them. With its right-hand side asking 1 cm/s more than theirs (a bump
+// under the middle), it cannot come on beside all four: one corner makes
+// way, and the impulse the rows apply is unchanged by the exchange.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "sim/solver/constraint_evaluation.h"
+#include "sim/solver/contact_rows_ops.h"
+#include "sim/solver/dependent_normal_rows.h"
+#include "tests/fixtures/problem_builders.h"
+
+namespace recoil::sim {
+namespace {
+
+const Eigen::Vector3d kFaceBox(1.0, 0.6, 0.4);
+constexpr double kMiddleBump = 0.01;  // m/s: what the middle asks beyond the corners
+
+// The box on its corners (contacts 0-3, rhs 0) and the middle contact (4).
+OwnedProblem box_with_middle_contact() {
+  OwnedProblem owned = rigid_box_on_ground(kFaceBox, 3.0, 0.3, 9.81, 0.01, Eigen::Vector3d::Zero(), 0.5, 0.5);
+  ContactRows middle = owned.problem.rows[0];
+  const Eigen::Matrix3d F = contact_frame(Eigen::Vector3d::UnitZ());
+  const Eigen::Vector3d r(0.0, 0.0, -0.5 * kFaceBox.z());  // under the centre of mass, whatever the yaw
+  const Eigen::Matrix3d skew_r = (Eigen::Matrix3d() << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0).finished();
+  middle.blocks = {F, -F * skew_r};
+  middle.rhs_normal = kMiddleBump;
+  owned.problem.rows.push_back(middle);
+  owned.problem.states.emplace_back();
+  return owned;
+}
+
+Eigen::VectorXd rows_impulse(const ContactProblem& problem, const Eigen::VectorXd& y, int n) {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(n);
+  for (size_t k = 0; k < problem.rows.size(); ++k) {
+    const ContactRows& rows = problem.rows[k];
+    for (size_t i = 0; i < rows.nodes.size(); ++i)
+      out.segment<3>(3 * rows.nodes[i]) += rows.blocks[i].transpose() * y.segment<3>(n + 3 * static_cast<int>(k));
+  }
+  return out;
+}
+
+TEST(DependentNormalRows, TheMiddleOfAFaceDependsOnItsCorners) {
+  OwnedProblem owned = box_with_middle_contact();
+  const MomentumPreconditioner P(*owned.problem.A);
+  OnNormalRows on(owned.problem, P);
+  EXPECT_FALSE(on.dependence(4).dependent) << "nothing is on yet";
+  on.add(0);
+  on.add(1);
+  EXPECT_FALSE(on.dependence(4).dependent) << "the middle is off the edge between corners 0 and 1";
+  on.add(3);
+  EXPECT_TRUE(on.dependence(4).dependent) << "three corners span every normal motion of the face";
+  on.add(2);
+  const NormalRowDependence d = on.dependence(4);
+  ASSERT_TRUE(d.dependent);
+  ASSERT_EQ(d.contacts.size(), 4u);
+  // The four corners depend on each other too: the smallest coefficients,
+  // a quarter each, are the ones reported.
+  for (double c : d.coefficients) EXPECT_NEAR(c, 0.25, 1e-9);
+  EXPECT_NEAR(d.mismatch, kMiddleBump, 1e-12);
+  on.remove(1);
+  on.remove(2);
+  const NormalRowDependence diagonal = on.dependence(4);
+  ASSERT_TRUE(diagonal.dependent) << "the middle lies on the diagonal from corner 0 to corner 3";
+  for (double c : diagonal.coefficients) EXPECT_NEAR(c, 0.5, 1e-9);
+}
+
+TEST(DependentNormalRows, ACornerMakesWayForADependentViolatedRow) {
+  OwnedProblem owned = box_with_middle_contact();
+  ContactProblem& problem = owned.problem;
+  const MomentumPreconditioner P(*problem.A);
+  const int n = 6, m = 5;
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(n + 3 * m);
+  // Corners sticking at rest, loaded unevenly; corner 1 carries the least.
+  const double load[4] = {0.04, 0.01, 0.03, 0.05};
+  for (int corner = 0; corner < 4; ++corner) {
+    problem.states[corner].mode = ContactMode::sticking;
+    problem.states[corner].lambda = load[corner];
+    y[n + 3 * corner] = load[corner];
+  }
+  std::vector<Eigen::Vector3d> inverse_masses;
+  for (const ContactRows& rows : problem.rows) inverse_masses.push_back(effective_inverse_mass(rows, P));
+  const Eigen::VectorXd before = rows_impulse(problem, y, n);
+  ContactSolverSettings settings;
+  const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
+  EXPECT_EQ(changes.mode_changes, 2) << "the middle on, one corner off";
+  EXPECT_NE(problem.states[4].mode, ContactMode::inactive);
+  EXPECT_EQ(problem.states[1].mode, ContactMode::inactive) << "the corner with the smallest lambda / c leaves";
+  EXPECT_NEAR(y[n + 3 * 4], 4.0 * load[1], 1e-12);
+  for (int corner : {0, 2, 3}) {
+    EXPECT_NE(problem.states[corner].mode, ContactMode::inactive);
+    EXPECT_NEAR(y[n + 3 * corner], load[corner] - load[1], 1e-12);
+  }
+  EXPECT_LT((rows_impulse(problem, y, n) - before).lpNorm<Eigen::Infinity>(), 1e-12);
+}
+
+TEST(DependentNormalRows, ADependentRowTheOthersAgreeWithComesOn) {
+  OwnedProblem owned = box_with_middle_contact();
+  ContactProblem& problem = owned.problem;
+  problem.rows[4].rhs_normal = 0.0;
+  const MomentumPreconditioner P(*problem.A);
+  const int n = 6, m = 5;
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(n + 3 * m);
+  // dv sinks the box by 2 cm/s: every row is violated, the corners and the middle alike.
+  y[2] = -0.02;
+  std::vector<Eigen::Vector3d> inverse_masses;
+  for (const ContactRows& rows : problem.rows) inverse_masses.push_back(effective_inverse_mass(rows, P));
+  ContactSolverSettings settings;
+  const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
+  EXPECT_EQ(changes.mode_changes, 5) << "a flat face's rows agree: all come on";
+  for (const ContactState& s : problem.states) EXPECT_NE(s.mode, ContactMode::inactive);
+}
+
+}  // namespace
+}  // namespace recoil::sim
