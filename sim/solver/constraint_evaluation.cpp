@@ -37,9 +37,6 @@ struct Proposal {
 
 Proposal unchanged(const ContactState& s, const Eigen::Vector3d& f) { return Proposal{-1, s, f, false, false}; }
 
-// Coefficients of a dependence below this share of the largest are rounding.
-constexpr double kCoefficientRounding = 1e-9;
-
 // Proposal p switched off.
 void switch_off(Proposal& p) {
   p.state = ContactState{};
@@ -161,23 +158,23 @@ std::vector<int> proposal_index(size_t contacts, const std::vector<Proposal>& pr
 
 // Activation k's normal row depends on on rows t (row_k = sum c_t row_t) and
 // stays violated with all of them at equality: one of them makes way. The
-// multipliers move along the null-space direction (+delta on k, -c_t delta
-// on each t), which changes no impulse, until the first lambda_t with
-// c_t > 0 reaches zero; that row switches off, and with every row but it at
-// equality its slack is mismatch / c_t > 0. Returns false, and k waits,
-// when no active row can make way: a row switched on by this evaluation
-// (lambda 0, kept: it is deeper), or none with c_t > 0 (the rows together
-// admit no dv at all, as for a body pinched from both sides).
+// normal multipliers move along the null-space direction (+delta on k,
+// -c_t delta on each t), which changes no normal impulse, until the first
+// lambda_t with c_t > 0 (a negative one read as zero) reaches zero; that
+// row switches off, its friction with it, and with every row but it at
+// equality its slack is mismatch / c_t > 0 (the ratio test of a dual
+// active-set method). Returns false, and k waits, when a row switched on by
+// this evaluation takes part (c_t > 0: it is deeper, and keeps its place)
+// or no row has c_t > 0 (the rows together admit no dv at all, as for a
+// body pinched from both sides).
 bool exchange(const ContactProblem& problem, const NormalRowDependence& d, int k, Eigen::VectorXd& y, int n,
               std::vector<Proposal>& proposals, std::vector<int>& index, OnNormalRows& on) {
-  double largest = 0.0;
-  for (double c : d.coefficients) largest = std::max(largest, std::abs(c));
   int leaving = -1;
   double delta = std::numeric_limits<double>::infinity();
   for (size_t i = 0; i < d.contacts.size(); ++i) {
     const int t = d.contacts[i];
     const double c = d.coefficients[i];
-    if (!(c > kCoefficientRounding * largest)) continue;
+    if (!(c > 0.0)) continue;
     if (problem.states[static_cast<size_t>(t)].mode == ContactMode::inactive) return false;
     const double ratio = std::max(y[n + 3 * t], 0.0) / c;
     if (ratio < delta) {
@@ -193,7 +190,7 @@ bool exchange(const ContactProblem& problem, const NormalRowDependence& d, int k
   };
   for (size_t i = 0; i < d.contacts.size(); ++i) {
     const int t = d.contacts[i];
-    set_lambda(t, std::max(y[n + 3 * t], 0.0) - d.coefficients[i] * delta);
+    if (t != leaving) set_lambda(t, y[n + 3 * t] - d.coefficients[i] * delta);
   }
   set_lambda(k, delta);
   if (index[static_cast<size_t>(leaving)] < 0) {
@@ -213,9 +210,12 @@ bool exchange(const ContactProblem& problem, const NormalRowDependence& d, int k
 // evaluation they do not, or a contact beside a loaded one could never come
 // on. Then an activation whose row depends on the rows that stay on
 // (dependent_normal_rows.h) comes on only where their right-hand sides
-// agree with its own to epsilon_2, or by exchange() where they leave it
-// violated; one they already satisfy waits. `proposals` holds the proposing
-// contacts only, in ascending contact order.
+// agree with its own to epsilon_2, or, at a converged evaluation, by
+// exchange() where they leave it violated (mid-solve it waits: the ratio
+// test on unconverged multipliers picked rows that the next evaluation
+// swapped back); one they already satisfy waits. `proposals` holds the proposing
+// contacts only, in ascending contact order but for the rows an exchange
+// switched off, appended.
 void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>& inverse_masses,
                const MomentumPreconditioner& P, const Evaluation& e, Eigen::VectorXd& y, int n,
                std::vector<Proposal>& proposals) {
@@ -248,7 +248,7 @@ void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>
     if (!waits) {
       const NormalRowDependence d = on.dependence(k);
       if (d.dependent && std::abs(d.mismatch) > e.eps2)
-        waits = d.mismatch < 0.0 || !exchange(problem, d, k, y, n, proposals, index, on);
+        waits = d.mismatch < 0.0 || !e.converged || !exchange(problem, d, k, y, n, proposals, index, on);
     }
     if (waits) {
       proposals[static_cast<size_t>(i)].accept = false;
@@ -330,7 +330,8 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vecto
   RECOIL_CHECK(n >= 0 && static_cast<int>(inverse_masses.size()) == m && static_cast<int>(problem.states.size()) == m);
   const Evaluation e{settings.policy, settings.constraint_tolerance, converged};
   const Eigen::VectorXd dv = y.head(n);
-  std::vector<Proposal> proposals;  // the contacts that propose a change: per-contact ones in ascending order, then Algorithm 3's
+  std::vector<Proposal> proposals;  // the contacts that propose a change: per-contact ones in ascending order, then
+                                    // rows an exchange switched off, then Algorithm 3's
   std::vector<Eigen::Vector2d> tangential(static_cast<size_t>(m), Eigen::Vector2d::Zero());  // u of the active contacts, m/s
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];
@@ -358,9 +359,10 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vecto
   if (converged) {
     std::optional<FrictionAcceleration> fresh;  // for an evaluation that keeps no pairs
     if (acceleration == nullptr) acceleration = &fresh.emplace();
-    std::vector<int> changing;  // ascending, as the proposals are
+    std::vector<int> changing;
     for (const Proposal& p : proposals)
       if (p.accept && p.mode_change) changing.push_back(p.contact);
+    std::sort(changing.begin(), changing.end());  // an exchange appends the row it switched off
     // A change of modes changes the system that G(x) solved: the remembered pairs no longer hold.
     if (!changing.empty()) acceleration->reset();
     update_kinetic_friction(problem, inverse_masses, y, n, tangential, changing, e, *acceleration, proposals);

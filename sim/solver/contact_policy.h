@@ -4,7 +4,7 @@
 // place: each field is a runtime setting with its unit and the reason it
 // exists, and docs/decisions/008-contact-evaluation-rules.md gives the
 // measurements behind each value. Shares and cosines are plain numbers.
-// Three rules have no number: sticking/sliding changes and Algorithm 3 wait
+// Three rules have no tuned number: sticking/sliding changes and Algorithm 3 wait
 // for a converged evaluation (a half-converged iterate cycled); static
 // friction acts on contacts whose sides are at relative rest (one that comes
 // on at rest has no slip direction and sticks at the converged evaluation;
@@ -13,7 +13,8 @@
 // sides at rest starts the step sticking); and an activation whose normal
 // row depends exactly on the rows that are on comes on only where their
 // right-hand sides agree, or in exchange for one of them (a dual active-set
-// ratio test: docs/decisions/023-dependent-rows-exchange.md). Algorithm 3's
+// ratio test; its dependence test's tolerance is rounding:
+// docs/decisions/023-dependent-rows-exchange.md). Algorithm 3's
 // extrapolation keeps its own depth (FrictionAcceleration::kDepth).
 
 namespace recoil::sim {

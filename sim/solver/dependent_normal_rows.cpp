@@ -1,6 +1,7 @@
 #include "sim/solver/dependent_normal_rows.h"
 
 #include <algorithm>
+#include <cmath>
 
 #include <Eigen/Eigenvalues>
 
@@ -8,14 +9,13 @@ namespace recoil::sim {
 
 namespace {
 
-// sin^2 of the angle between a row and the span of others below which the
-// row counts as lying in that span: rounding of rows assembled from unit
-// normals and lever arms leaves about 1e-15; a row merely close to the span
-// (near-duplicate, not dependent) is the parallel hold-back's business.
-constexpr double kDependent = 1e-10;
-// Eigenvalues of the rows' Gram matrix below this share of the largest are
-// the rows' own dependencies among themselves (a box face's fourth corner).
-constexpr double kRank = 1e-10;
+// Rounding, as a share: of sin^2 of the angle between a row and the span of
+// others (rows assembled from unit normals and lever arms leave about 1e-15
+// where they depend exactly), of the Gram matrix's largest eigenvalue (the
+// on rows' own dependencies among themselves, a box face's fourth corner),
+// and of the largest coefficient. Rows merely close to each other's span
+// are not dependent here: docs/decisions/023-dependent-rows-exchange.md.
+constexpr double kRounding = 1e-10;
 
 }  // namespace
 
@@ -80,14 +80,16 @@ NormalRowDependence OnNormalRows::dependence(int k) {
   const Eigen::VectorXd along = eigen.eigenvectors().transpose() * with_k;
   Eigen::VectorXd scaled = Eigen::VectorXd::Zero(m);
   for (Eigen::Index i = 0; i < m; ++i)
-    if (values[i] > kRank * values.maxCoeff()) scaled[i] = along[i] / values[i];
+    if (values[i] > kRounding * values.maxCoeff()) scaled[i] = along[i] / values[i];
   const Eigen::VectorXd c = eigen.eigenvectors() * scaled;
   const double residual = own - with_k.dot(c);
-  out.dependent = residual <= kDependent * own;
+  out.dependent = residual <= kRounding * own;
   if (!out.dependent) return out;
-  out.coefficients.assign(c.data(), c.data() + m);
+  const double largest = c.cwiseAbs().maxCoeff();
+  for (Eigen::Index i = 0; i < m; ++i) out.coefficients.push_back(std::abs(c[i]) > kRounding * largest ? c[i] : 0.0);
   out.mismatch = m_problem.rows[static_cast<size_t>(k)].rhs_normal;
-  for (Eigen::Index i = 0; i < m; ++i) out.mismatch -= c[i] * m_problem.rows[size_t(rows[size_t(i)])].rhs_normal;
+  for (Eigen::Index i = 0; i < m; ++i)
+    out.mismatch -= out.coefficients[size_t(i)] * m_problem.rows[size_t(rows[size_t(i)])].rhs_normal;
   return out;
 }
 

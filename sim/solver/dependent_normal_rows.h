@@ -19,7 +19,7 @@ namespace recoil::sim {
 struct NormalRowDependence {
   bool dependent = false;
   std::vector<int> contacts;        // the rows t it depends on
-  std::vector<double> coefficients; // c_t, per contact above
+  std::vector<double> coefficients; // c_t, per contact above; rounding-level ones are 0
   double mismatch = 0.0;            // m/s: rhs_k - sum c_t rhs_t, how far k stays violated with every t at equality
 };
 
@@ -31,8 +31,10 @@ class OnNormalRows {
   void remove(int k);
   bool on(int k) const { return m_on[static_cast<size_t>(k)] != 0; }
 
-  // Contact k's normal row against the on rows sharing a DoF node with it
-  // (the only ones it can depend on, bar chains through third bodies).
+  // Contact k's normal row against the on rows sharing a DoF node with it.
+  // A row can also depend on rows it shares no node with, through a chain of
+  // bodies (A-C, C-D, D-B for a row between A and B): those are missed, and
+  // the row counts as independent.
   NormalRowDependence dependence(int k);
 
  private:

@@ -7,6 +7,7 @@
 
 #include <cmath>
 
+#include "sim/geometry/skew.h"
 #include "sim/solver/constraint_evaluation.h"
 #include "sim/solver/contact_rows_ops.h"
 #include "sim/solver/dependent_normal_rows.h"
@@ -24,21 +25,18 @@ OwnedProblem box_with_middle_contact() {
   ContactRows middle = owned.problem.rows[0];
   const Eigen::Matrix3d F = contact_frame(Eigen::Vector3d::UnitZ());
   const Eigen::Vector3d r(0.0, 0.0, -0.5 * kFaceBox.z());  // under the centre of mass, whatever the yaw
-  const Eigen::Matrix3d skew_r = (Eigen::Matrix3d() << 0, -r.z(), r.y(), r.z(), 0, -r.x(), -r.y(), r.x(), 0).finished();
-  middle.blocks = {F, -F * skew_r};
+  middle.blocks = {F, -F * skew(r)};
   middle.rhs_normal = kMiddleBump;
   owned.problem.rows.push_back(middle);
   owned.problem.states.emplace_back();
   return owned;
 }
 
+// J^T y's multipliers: the impulse the rows apply, per DoF.
 Eigen::VectorXd rows_impulse(const ContactProblem& problem, const Eigen::VectorXd& y, int n) {
   Eigen::VectorXd out = Eigen::VectorXd::Zero(n);
-  for (size_t k = 0; k < problem.rows.size(); ++k) {
-    const ContactRows& rows = problem.rows[k];
-    for (size_t i = 0; i < rows.nodes.size(); ++i)
-      out.segment<3>(3 * rows.nodes[i]) += rows.blocks[i].transpose() * y.segment<3>(n + 3 * static_cast<int>(k));
-  }
+  for (size_t k = 0; k < problem.rows.size(); ++k)
+    add_rows_transpose_times(problem.rows[k], y.segment<3>(n + 3 * static_cast<int>(k)), out);
   return out;
 }
 
@@ -67,33 +65,66 @@ TEST(DependentNormalRows, TheMiddleOfAFaceDependsOnItsCorners) {
   for (double c : diagonal.coefficients) EXPECT_NEAR(c, 0.5, 1e-9);
 }
 
+// Sliding corners too: the corner switched off must stay off when Algorithm
+// 3 then updates the friction of every sliding contact that keeps its mode.
 TEST(DependentNormalRows, ACornerMakesWayForADependentViolatedRow) {
+  for (const ContactMode corners : {ContactMode::sticking, ContactMode::sliding}) {
+    OwnedProblem owned = box_with_middle_contact();
+    ContactProblem& problem = owned.problem;
+    const MomentumPreconditioner P(*problem.A);
+    const int n = 6, m = 5;
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(n + 3 * m);
+    // Corners at rest, loaded unevenly; corner 1 carries the least.
+    const double load[4] = {0.04, 0.01, 0.03, 0.05};
+    for (int corner = 0; corner < 4; ++corner) {
+      ContactState& s = problem.states[corner];
+      s.mode = corners;
+      s.lambda = load[corner];
+      if (corners == ContactMode::sliding) {
+        s.lambda_kinetic = 0.5 * load[corner];
+        s.slip = Eigen::Vector2d(1.0, 0.0);
+      }
+      y[n + 3 * corner] = load[corner];
+    }
+    std::vector<Eigen::Vector3d> inverse_masses;
+    for (const ContactRows& rows : problem.rows) inverse_masses.push_back(effective_inverse_mass(rows, P));
+    const Eigen::VectorXd before = rows_impulse(problem, y, n);
+    ContactSolverSettings settings;
+    const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
+    const char* what = corners == ContactMode::sticking ? "sticking corners" : "sliding corners";
+    EXPECT_EQ(changes.mode_changes, 2) << what << ": the middle on, one corner off";
+    EXPECT_NE(problem.states[4].mode, ContactMode::inactive) << what;
+    EXPECT_EQ(problem.states[1].mode, ContactMode::inactive) << what << ": the smallest lambda / c leaves";
+    EXPECT_EQ(y[n + 3 * 1], 0.0) << what;
+    EXPECT_NEAR(y[n + 3 * 4], 4.0 * load[1], 1e-12) << what;
+    for (int corner : {0, 2, 3}) {
+      EXPECT_NE(problem.states[corner].mode, ContactMode::inactive) << what;
+      EXPECT_NEAR(y[n + 3 * corner], load[corner] - load[1], 1e-12) << what;
+    }
+    EXPECT_LT((rows_impulse(problem, y, n) - before).lpNorm<Eigen::Infinity>(), 1e-12) << what;
+  }
+}
+
+// Mid-solve the multipliers are not yet the system's: the middle waits
+// for a converged evaluation instead of exchanging on them.
+TEST(DependentNormalRows, MidSolveADependentViolatedRowWaits) {
   OwnedProblem owned = box_with_middle_contact();
   ContactProblem& problem = owned.problem;
   const MomentumPreconditioner P(*problem.A);
   const int n = 6, m = 5;
   Eigen::VectorXd y = Eigen::VectorXd::Zero(n + 3 * m);
-  // Corners sticking at rest, loaded unevenly; corner 1 carries the least.
-  const double load[4] = {0.04, 0.01, 0.03, 0.05};
   for (int corner = 0; corner < 4; ++corner) {
     problem.states[corner].mode = ContactMode::sticking;
-    problem.states[corner].lambda = load[corner];
-    y[n + 3 * corner] = load[corner];
+    y[n + 3 * corner] = 0.01 * (corner + 1);
   }
   std::vector<Eigen::Vector3d> inverse_masses;
   for (const ContactRows& rows : problem.rows) inverse_masses.push_back(effective_inverse_mass(rows, P));
-  const Eigen::VectorXd before = rows_impulse(problem, y, n);
+  const Eigen::VectorXd before = y;
   ContactSolverSettings settings;
-  const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
-  EXPECT_EQ(changes.mode_changes, 2) << "the middle on, one corner off";
-  EXPECT_NE(problem.states[4].mode, ContactMode::inactive);
-  EXPECT_EQ(problem.states[1].mode, ContactMode::inactive) << "the corner with the smallest lambda / c leaves";
-  EXPECT_NEAR(y[n + 3 * 4], 4.0 * load[1], 1e-12);
-  for (int corner : {0, 2, 3}) {
-    EXPECT_NE(problem.states[corner].mode, ContactMode::inactive);
-    EXPECT_NEAR(y[n + 3 * corner], load[corner] - load[1], 1e-12);
-  }
-  EXPECT_LT((rows_impulse(problem, y, n) - before).lpNorm<Eigen::Infinity>(), 1e-12);
+  const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, false);
+  EXPECT_EQ(changes.total(), 0);
+  EXPECT_EQ(problem.states[4].mode, ContactMode::inactive);
+  EXPECT_EQ(y, before);
 }
 
 TEST(DependentNormalRows, ADependentRowTheOthersAgreeWithComesOn) {
