@@ -21,15 +21,12 @@ constexpr double kRounding = 1e-10;
 
 OnNormalRows::OnNormalRows(const ContactProblem& problem, const MomentumPreconditioner& P)
     : m_problem(problem), m_P(P), m_on(problem.rows.size(), 0), m_modes(problem.rows.size()),
-      m_has_modes(problem.rows.size(), 0), m_seen(problem.rows.size(), 0) {}
+      m_seen(problem.rows.size(), 0) {}
 
 const NormalRowModes& OnNormalRows::modes(int k) {
-  const size_t i = static_cast<size_t>(k);
-  if (!m_has_modes[i]) {
-    m_modes[i] = normal_row_modes(m_problem.rows[i], m_P);
-    m_has_modes[i] = 1;
-  }
-  return m_modes[i];
+  std::optional<NormalRowModes>& modes = m_modes[static_cast<size_t>(k)];
+  if (!modes) modes = normal_row_modes(m_problem.rows[static_cast<size_t>(k)], m_P);
+  return *modes;
 }
 
 void OnNormalRows::add(int k) {
@@ -72,7 +69,10 @@ NormalRowDependence OnNormalRows::dependence(int k) {
     with_k[i] = product(rows[size_t(i)], k);
   }
   const double own = product(k, k);
-  if (!(own > 0.0)) return out;
+  if (!(own > 0.0)) {
+    rows.clear();
+    return out;
+  }
   // Least-squares coefficients through the pseudo-inverse: the on rows may
   // depend on each other too.
   const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(gram);
@@ -84,7 +84,10 @@ NormalRowDependence OnNormalRows::dependence(int k) {
   const Eigen::VectorXd c = eigen.eigenvectors() * scaled;
   const double residual = own - with_k.dot(c);
   out.dependent = residual <= kRounding * own;
-  if (!out.dependent) return out;
+  if (!out.dependent) {
+    rows.clear();
+    return out;
+  }
   const double largest = c.cwiseAbs().maxCoeff();
   for (Eigen::Index i = 0; i < m; ++i) out.coefficients.push_back(std::abs(c[i]) > kRounding * largest ? c[i] : 0.0);
   out.mismatch = m_problem.rows[static_cast<size_t>(k)].rhs_normal;

@@ -5,6 +5,7 @@
 // the others; switched on, such a row makes the active rows' equalities
 // inconsistent unless its right-hand side agrees with theirs, and CR's
 // multipliers then grow without bound (docs/decisions/023-dependent-rows-exchange.md).
+#include <optional>
 #include <unordered_map>
 #include <vector>
 
@@ -18,7 +19,7 @@ namespace recoil::sim {
 // to rounding, and what the rows' right-hand sides then leave for k.
 struct NormalRowDependence {
   bool dependent = false;
-  std::vector<int> contacts;        // the rows t it depends on
+  std::vector<int> contacts;        // the rows t it depends on (empty when it does not)
   std::vector<double> coefficients; // c_t, per contact above; rounding-level ones are 0
   double mismatch = 0.0;            // m/s: rhs_k - sum c_t rhs_t, how far k stays violated with every t at equality
 };
@@ -44,8 +45,7 @@ class OnNormalRows {
   const MomentumPreconditioner& m_P;
   std::unordered_map<int, std::vector<int>> m_by_node;  // DoF node -> contacts ever added touching it
   std::vector<char> m_on;                               // per contact
-  std::vector<NormalRowModes> m_modes;                  // per contact, computed once
-  std::vector<char> m_has_modes;
+  std::vector<std::optional<NormalRowModes>> m_modes;   // per contact, computed once
   std::vector<int> m_seen;                              // per contact: the query it was last gathered for
   int m_query = 0;
 };

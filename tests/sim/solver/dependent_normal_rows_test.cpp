@@ -47,7 +47,9 @@ TEST(DependentNormalRows, TheMiddleOfAFaceDependsOnItsCorners) {
   EXPECT_FALSE(on.dependence(4).dependent) << "nothing is on yet";
   on.add(0);
   on.add(1);
-  EXPECT_FALSE(on.dependence(4).dependent) << "the middle is off the edge between corners 0 and 1";
+  const NormalRowDependence off_edge = on.dependence(4);
+  EXPECT_FALSE(off_edge.dependent) << "the middle is off the edge between corners 0 and 1";
+  EXPECT_TRUE(off_edge.contacts.empty() && off_edge.coefficients.empty());
   on.add(3);
   EXPECT_TRUE(on.dependence(4).dependent) << "three corners span every normal motion of the face";
   on.add(2);
