@@ -10,7 +10,7 @@
 
 #include "core/check.h"
 #include "sim/solver/contact_rows_ops.h"
-#include "sim/solver/dependent_normal_rows.h"
+#include "sim/solver/dependent_rows.h"
 #include "sim/solver/taken_normal_rows.h"
 
 namespace recoil::sim {
@@ -60,6 +60,19 @@ Proposal activate(const ContactRows& rows, const ContactState& s, const Eigen::V
   return p;
 }
 
+// Sticking contact p slides along -gamma, its lambda' starting at lambda.
+void break_away(const ContactRows& rows, Proposal& p) {
+  const Eigen::Vector2d gamma = p.f.tail<2>();
+  const double norm = gamma.norm();
+  p.state.mode = ContactMode::sliding;
+  p.state.slip = norm > 0.0 ? Eigen::Vector2d(-gamma / norm) : Eigen::Vector2d::Zero();
+  p.state.lambda_kinetic = std::max(p.f[0], 0.0);
+  p.state.impending = rows.mu_static > rows.mu_kinetic;
+  p.state.gamma.setZero();
+  p.f.tail<2>().setZero();
+  p.mode_change = p.accept = true;
+}
+
 // Algorithm 2, lines 11-13: a sticking contact whose friction impulse left
 // the static cone slides, along -gamma, its lambda' starting at the current
 // lambda. It breaks away only when the tangential residual u
@@ -73,13 +86,7 @@ void update_static_friction(const ContactRows& rows, const Eigen::Vector2d& u, c
   const double excess = (norm - rows.mu_static * std::max(lambda, 0.0)) * w_t;
   const bool can_stick = rows.mu_static > 0.0;
   if (can_stick && !(excess > e.eps2 && u.dot(gamma) <= e.eps2 * norm)) return;
-  p.state.mode = ContactMode::sliding;
-  p.state.slip = norm > 0.0 ? Eigen::Vector2d(-gamma / norm) : Eigen::Vector2d::Zero();
-  p.state.lambda_kinetic = std::max(lambda, 0.0);
-  p.state.impending = rows.mu_static > rows.mu_kinetic;
-  p.state.gamma.setZero();
-  p.f.tail<2>().setZero();
-  p.mode_change = p.accept = true;
+  break_away(rows, p);
 }
 
 // Algorithm 2, lines 14-16: a sliding contact whose slip runs backwards
@@ -156,51 +163,120 @@ std::vector<int> proposal_index(size_t contacts, const std::vector<Proposal>& pr
   return index;
 }
 
-// Activation k's normal row depends on on rows t (row_k = sum c_t row_t) and
-// stays violated with all of them at equality: one of them makes way. The
-// normal multipliers move along the null-space direction (+delta on k,
-// -c_t delta on each t), which changes no normal impulse, until the first
-// lambda_t with c_t > 0 (a negative one read as zero) reaches zero; that
-// row switches off, its friction with it, and with every row but it at
-// equality its slack is mismatch / c_t > 0 (the ratio test of a dual
-// active-set method). Returns false, and k waits, when a row switched on by
-// this evaluation takes part (c_t > 0: it is deeper, and keeps its place)
-// or no row has c_t > 0 (the rows together admit no dv at all, as for a
+// How far, delta (N s), on-row contact t's multipliers f can move along
+// the null-space direction -c delta (c: the coefficients of its normal and
+// tangent rows in row_k = sum c_t row_t) before they reach a bound of its
+// law: lambda = 0 (c_n > 0), or a sticking contact's gamma at the rim of
+// its static cone, |gamma - c_t delta| = mu_s (lambda - c_n delta), the
+// first root of that quadratic; infinity when neither is reached. Where
+// gamma and lambda vanish together the cone closes to its tip: lambda = 0.
+double room_along(const ContactRows& rows, const ContactState& s, const Eigen::Vector3d& f, const Eigen::Vector3d& c,
+                  bool& reaches_cone) {
+  const double lambda = std::max(f[0], 0.0);
+  const double to_zero = c[0] > 0.0 ? lambda / c[0] : std::numeric_limits<double>::infinity();
+  reaches_cone = false;
+  if (s.mode != ContactMode::sticking) return to_zero;
+  const Eigen::Vector2d gamma = f.tail<2>(), ct = c.tail<2>();
+  if (std::isfinite(to_zero) && (gamma - ct * to_zero).norm() <= 4.0 * std::numeric_limits<double>::epsilon() *
+                                                                     (gamma.norm() + ct.norm() * to_zero))
+    return to_zero;
+  const double mu = rows.mu_static;
+  // |gamma - ct d|^2 - mu^2 (lambda - c_n d)^2 = a d^2 + b d + e, e <= 0 inside the cone.
+  const double a = ct.squaredNorm() - mu * mu * c[0] * c[0];
+  const double b = -2.0 * gamma.dot(ct) + 2.0 * mu * mu * lambda * c[0];
+  const double e = gamma.squaredNorm() - mu * mu * lambda * lambda;
+  double rim = std::numeric_limits<double>::infinity();
+  if (e >= 0.0) {
+    rim = 0.0;
+  } else if (a != 0.0) {
+    const double disc = b * b - 4.0 * a * e;
+    if (disc >= 0.0) {
+      const double root = std::sqrt(disc);
+      for (double d : {(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)})
+        if (d >= 0.0) rim = std::min(rim, d);
+    }
+  } else if (b > 0.0) {
+    rim = -e / b;
+  }
+  if (rim > to_zero) return to_zero;
+  reaches_cone = true;
+  return rim;
+}
+
+// Activation k's normal row depends on on rows t (row_k = sum c_t row_t)
+// and stays violated with all of them at equality: one of them makes way.
+// The multipliers move along the null-space direction (+delta on k, -c_t
+// delta on each t), which changes no impulse, until the first contact's
+// reach a bound of its law (room_along; the ratio test of a dual
+// active-set method): at lambda = 0 it switches off, its friction with it;
+// at its static cone's rim it slides, opposing the friction it then
+// applies. Returns false, and k waits, when a contact switched on by this
+// evaluation takes part with c_n > 0 (it is deeper, and keeps its place)
+// or no bound is reached (the rows together admit no dv at all, as for a
 // body pinched from both sides).
-bool exchange(const ContactProblem& problem, const NormalRowDependence& d, int k, Eigen::VectorXd& y, int n,
-              std::vector<Proposal>& proposals, std::vector<int>& index, OnNormalRows& on) {
+bool exchange(const ContactProblem& problem, const RowDependence& d, int k, Eigen::VectorXd& y, int n,
+              std::vector<Proposal>& proposals, std::vector<int>& index, OnRows& on) {
+  std::vector<int> contacts;  // the contacts of d's rows, each once, with their coefficients
+  std::vector<Eigen::Vector3d> coefficients;
+  for (size_t i = 0; i < d.rows.size(); ++i) {
+    const ContactRow& t = d.rows[i];
+    if (contacts.empty() || contacts.back() != t.contact) {
+      contacts.push_back(t.contact);
+      coefficients.push_back(Eigen::Vector3d::Zero());
+    }
+    coefficients.back()[t.row] = d.coefficients[i];
+  }
+  // A contact this evaluation changes is read as the change leaves it.
+  const auto proposal_of = [&](int t) -> Proposal* {
+    const int p = index[static_cast<size_t>(t)];
+    return p >= 0 && proposals[static_cast<size_t>(p)].accept ? &proposals[static_cast<size_t>(p)] : nullptr;
+  };
+  const auto multipliers = [&](int t) -> Eigen::Vector3d {
+    const Proposal* p = proposal_of(t);
+    return p ? p->f : Eigen::Vector3d(y.segment<3>(n + 3 * t));
+  };
   int leaving = -1;
+  bool slides = false;
   double delta = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < d.contacts.size(); ++i) {
-    const int t = d.contacts[i];
-    const double c = d.coefficients[i];
-    if (!(c > 0.0)) continue;
-    if (problem.states[static_cast<size_t>(t)].mode == ContactMode::inactive) return false;
-    const double ratio = std::max(y[n + 3 * t], 0.0) / c;
-    if (ratio < delta) {
-      delta = ratio;
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    const int t = contacts[i];
+    const Eigen::Vector3d& c = coefficients[i];
+    const ContactState& now = problem.states[static_cast<size_t>(t)];
+    if (now.mode == ContactMode::inactive && c[0] > 0.0) return false;
+    const Proposal* p = proposal_of(t);
+    bool reaches_cone = false;
+    const double room = room_along(problem.rows[static_cast<size_t>(t)], p ? p->state : now, multipliers(t), c,
+                                   reaches_cone);
+    if (room < delta) {
+      delta = room;
       leaving = t;
+      slides = reaches_cone;
     }
   }
   if (leaving < 0) return false;
-  const auto set_lambda = [&](int contact, double lambda) {
-    y[n + 3 * contact] = lambda;
-    const int p = index[static_cast<size_t>(contact)];
-    if (p >= 0) proposals[static_cast<size_t>(p)].f[0] = lambda;
-  };
-  for (size_t i = 0; i < d.contacts.size(); ++i) {
-    const int t = d.contacts[i];
-    if (t != leaving) set_lambda(t, y[n + 3 * t] - d.coefficients[i] * delta);
+  for (size_t i = 0; i < contacts.size(); ++i) {
+    const int t = contacts[i];
+    const Eigen::Vector3d f = multipliers(t) - coefficients[i] * delta;
+    y.segment<3>(n + 3 * t) = f;
+    if (Proposal* p = proposal_of(t)) p->f = f;
   }
-  set_lambda(k, delta);
+  y[n + 3 * k] = delta;
+  proposals[static_cast<size_t>(index[static_cast<size_t>(k)])].f[0] = delta;
   if (index[static_cast<size_t>(leaving)] < 0) {
     index[static_cast<size_t>(leaving)] = static_cast<int>(proposals.size());
     proposals.push_back(unchanged(problem.states[static_cast<size_t>(leaving)], y.segment<3>(n + 3 * leaving)));
     proposals.back().contact = leaving;
   }
-  switch_off(proposals[static_cast<size_t>(index[static_cast<size_t>(leaving)])]);
-  y.segment<3>(n + 3 * leaving).setZero();
-  on.remove(leaving);
+  Proposal& p = proposals[static_cast<size_t>(index[static_cast<size_t>(leaving)])];
+  if (slides) {
+    break_away(problem.rows[static_cast<size_t>(leaving)], p);
+    y.segment<2>(n + 3 * leaving + 1).setZero();
+    on.add(leaving, false);
+  } else {
+    switch_off(p);
+    y.segment<3>(n + 3 * leaving).setZero();
+    on.remove(leaving);
+  }
   return true;
 }
 
@@ -208,24 +284,29 @@ bool exchange(const ContactProblem& problem, const NormalRowDependence& d, int k
 // first, and one whose normal row is within `parallel` of a row already
 // taken waits. Mid-solve the active rows count as taken too; at a converged
 // evaluation they do not, or a contact beside a loaded one could never come
-// on. Then an activation whose row depends on the rows that stay on
-// (dependent_normal_rows.h) comes on only where their right-hand sides
-// agree with its own to epsilon_2, or, at a converged evaluation, by
-// exchange() where they leave it violated (mid-solve it waits: the ratio
-// test on unconverged multipliers picked rows that the next evaluation
-// swapped back); one they already satisfy waits. `proposals` holds the proposing
-// contacts only, in ascending contact order but for the rows an exchange
-// switched off, appended.
+// on. The rows that stay on (dependent_rows.h) are every active contact's
+// normal row and a sticking one's tangent rows. A sliding contact whose
+// tangent rows depend on them sticks only where their right-hand sides
+// agree with its own to epsilon_2 (else its slip is theirs to decide, and it
+// keeps sliding). An activation whose normal row depends on them comes on
+// where they agree, or, at a converged evaluation, by exchange() where they
+// leave it violated (mid-solve it waits: the ratio test on unconverged
+// multipliers picked rows that the next evaluation swapped back); one they
+// already satisfy waits. `proposals` holds the proposing contacts only, in
+// ascending contact order but for the contacts an exchange changed, appended.
 void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>& inverse_masses,
                const MomentumPreconditioner& P, const Evaluation& e, Eigen::VectorXd& y, int n,
                std::vector<Proposal>& proposals) {
-  std::vector<int> order;  // indices into `proposals`: the activations, deepest first
+  std::vector<int> order;     // indices into `proposals`: the activations, deepest first
+  std::vector<int> sticking;  // and the sliding contacts that stick
   for (size_t i = 0; i < proposals.size(); ++i) {
     const Proposal& p = proposals[i];
-    const bool active = problem.states[static_cast<size_t>(p.contact)].mode != ContactMode::inactive;
-    if (!active && p.accept && p.mode_change) order.push_back(static_cast<int>(i));
+    const ContactMode now = problem.states[static_cast<size_t>(p.contact)].mode;
+    if (!p.accept || !p.mode_change) continue;
+    if (now == ContactMode::inactive) order.push_back(static_cast<int>(i));
+    if (now == ContactMode::sliding && p.state.mode == ContactMode::sticking) sticking.push_back(static_cast<int>(i));
   }
-  if (order.empty()) return;
+  if (order.empty() && sticking.empty()) return;
   std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
     return proposals[static_cast<size_t>(a)].depth > proposals[static_cast<size_t>(b)].depth;
   });
@@ -234,19 +315,31 @@ void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>
     for (size_t k = 0; k < problem.states.size(); ++k)
       if (problem.states[k].mode != ContactMode::inactive) taken.take(static_cast<int>(k));
   std::vector<int> index = proposal_index(problem.states.size(), proposals);
-  OnNormalRows on(problem, P);
+  OnRows on(problem, P);
   for (size_t k = 0; k < problem.states.size(); ++k) {
     if (problem.states[k].mode == ContactMode::inactive) continue;
     const int p = index[k];
-    const bool leaves = p >= 0 && proposals[static_cast<size_t>(p)].accept &&
-                        proposals[static_cast<size_t>(p)].state.mode == ContactMode::inactive;
-    if (!leaves) on.add(static_cast<int>(k));
+    const ContactMode mode = p >= 0 && proposals[static_cast<size_t>(p)].accept
+                                 ? proposals[static_cast<size_t>(p)].state.mode
+                                 : problem.states[k].mode;
+    if (mode != ContactMode::inactive) on.add(static_cast<int>(k), mode == ContactMode::sticking);
+  }
+  for (int i : sticking) {
+    const int k = proposals[static_cast<size_t>(i)].contact;
+    for (int row = 1; row <= 2; ++row) {
+      const RowDependence d = on.dependence(k, row);
+      if (d.dependent && std::abs(d.mismatch) > e.eps2) {
+        proposals[static_cast<size_t>(i)].accept = false;
+        on.add(k, false);
+        break;
+      }
+    }
   }
   for (int i : order) {
     const int k = proposals[static_cast<size_t>(i)].contact;
     bool waits = taken.parallel_to_taken(k);
     if (!waits) {
-      const NormalRowDependence d = on.dependence(k);
+      const RowDependence d = on.dependence(k);
       if (d.dependent && std::abs(d.mismatch) > e.eps2)
         waits = d.mismatch < 0.0 || !e.converged || !exchange(problem, d, k, y, n, proposals, index, on);
     }
@@ -254,7 +347,7 @@ void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>
       proposals[static_cast<size_t>(i)].accept = false;
     } else {
       taken.take(k);
-      on.add(k);
+      on.add(k, false);
     }
   }
 }
@@ -331,7 +424,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vecto
   const Evaluation e{settings.policy, settings.constraint_tolerance, converged};
   const Eigen::VectorXd dv = y.head(n);
   std::vector<Proposal> proposals;  // the contacts that propose a change: per-contact ones in ascending order, then
-                                    // rows an exchange switched off, then Algorithm 3's
+                                    // contacts an exchange changed, then Algorithm 3's
   std::vector<Eigen::Vector2d> tangential(static_cast<size_t>(m), Eigen::Vector2d::Zero());  // u of the active contacts, m/s
   for (int k = 0; k < m; ++k) {
     const ContactRows& rows = problem.rows[static_cast<size_t>(k)];

@@ -40,18 +40,8 @@ ProblemPreconditioner::ProblemPreconditioner(const ContactProblem& problem) : m_
   m_used = &*m_own;
 }
 
-namespace {
-
-// J_k Z_b for each body b whose rigid modes the rows touch (3 by 6, the
-// rows' velocities under each rigid motion), at most two: a contact has two sides.
-struct BodyModeRows {
-  int count = 0;
-  std::array<int, 2> body{};
-  std::array<MomentumPreconditioner::ModeBlock, 2> rows_times_modes;
-};
-
-BodyModeRows rows_times_modes(const ContactRows& rows, const MomentumPreconditioner& P) {
-  BodyModeRows out;
+ContactRowModes contact_row_modes(const ContactRows& rows, const MomentumPreconditioner& P) {
+  ContactRowModes out;
   for (size_t i = 0; i < rows.nodes.size(); ++i) {
     const int b = P.body_of(rows.nodes[i]);
     if (b < 0) continue;
@@ -68,8 +58,6 @@ BodyModeRows rows_times_modes(const ContactRows& rows, const MomentumPreconditio
   return out;
 }
 
-}  // namespace
-
 Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const MomentumPreconditioner& P) {
   Eigen::Vector3d w = Eigen::Vector3d::Zero();
   for (size_t i = 0; i < rows.nodes.size(); ++i) {
@@ -77,7 +65,7 @@ Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const MomentumPr
     const Eigen::Matrix3d& D = P.diagonal_inverse(rows.nodes[i]);
     for (int r = 0; r < 3; ++r) w[r] += J.row(r).dot(D * J.row(r).transpose());
   }
-  const BodyModeRows modes = rows_times_modes(rows, P);
+  const ContactRowModes modes = contact_row_modes(rows, P);
   for (size_t slot = 0; slot < static_cast<size_t>(modes.count); ++slot) {
     const MomentumPreconditioner::ModeBlock& JZ = modes.rows_times_modes[slot];
     w += (JZ * P.coarse_inverse(modes.body[slot]) * JZ.transpose()).diagonal();
@@ -86,7 +74,7 @@ Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const MomentumPr
 }
 
 NormalRowModes normal_row_modes(const ContactRows& rows, const MomentumPreconditioner& P) {
-  const BodyModeRows modes = rows_times_modes(rows, P);
+  const ContactRowModes modes = contact_row_modes(rows, P);
   NormalRowModes out;
   out.count = modes.count;
   out.body = modes.body;

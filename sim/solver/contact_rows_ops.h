@@ -52,6 +52,16 @@ Eigen::Vector3d effective_inverse_mass(const ContactRows& rows, const MomentumPr
 // effective_inverse_mass(a)[0]).
 double normal_rows_product(const ContactRows& a, const ContactRows& b, const MomentumPreconditioner& P);
 
+// A contact's three rows' velocities under the rigid motions of the
+// deformable bodies it touches (J_k Z_b, 3 by 6 each, at most two bodies: a
+// contact has two sides), the part of its rows that P_A^-1's coarse term sees.
+struct ContactRowModes {
+  int count = 0;
+  std::array<int, 2> body{};
+  std::array<MomentumPreconditioner::ModeBlock, 2> rows_times_modes;
+};
+ContactRowModes contact_row_modes(const ContactRows& rows, const MomentumPreconditioner& P);
+
 // A normal row's velocities under the rigid motions of the bodies its
 // contact touches (J_n Z_b, 1 by 6 each, at most two bodies): what
 // normal_rows_product recomputes per pair, for a caller measuring many pairs.

@@ -53,10 +53,12 @@ TEST(ActivationOrder, OfTwoNearlyParallelRowsOnlyTheDeeperComesOn) {
   // Mid-solve, a row parallel to an active one keeps waiting ...
   EXPECT_EQ(p.evaluate(false), 0);
   EXPECT_FALSE(p.active(1));
-  // ... and comes on at a solved evaluation if it still penetrates (the two
-  // rows already on, without a slip at rest, stick then too).
-  EXPECT_EQ(p.evaluate(true), 3);
+  // ... and comes on at a solved evaluation if it still penetrates. The two
+  // contacts already on, at rest, do not stick with it: at dv = 0 either
+  // one's sticking rows would hold the point against the other's normal row.
+  EXPECT_EQ(p.evaluate(true), 1);
   EXPECT_TRUE(p.active(1));
+  for (int k = 0; k < 3; ++k) EXPECT_EQ(p.owned.problem.states[static_cast<size_t>(k)].mode, ContactMode::sliding) << k;
 }
 
 TEST(ActivationOrder, ThePolicySetsTheParallelThreshold) {

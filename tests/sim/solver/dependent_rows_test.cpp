@@ -10,7 +10,7 @@
 #include "sim/geometry/skew.h"
 #include "sim/solver/constraint_evaluation.h"
 #include "sim/solver/contact_rows_ops.h"
-#include "sim/solver/dependent_normal_rows.h"
+#include "sim/solver/dependent_rows.h"
 #include "tests/fixtures/problem_builders.h"
 
 namespace recoil::sim {
@@ -40,36 +40,36 @@ Eigen::VectorXd rows_impulse(const ContactProblem& problem, const Eigen::VectorX
   return out;
 }
 
-TEST(DependentNormalRows, TheMiddleOfAFaceDependsOnItsCorners) {
+TEST(DependentRows, TheMiddleOfAFaceDependsOnItsCorners) {
   OwnedProblem owned = box_with_middle_contact();
   const MomentumPreconditioner P(*owned.problem.A);
-  OnNormalRows on(owned.problem, P);
+  OnRows on(owned.problem, P);
   EXPECT_FALSE(on.dependence(4).dependent) << "nothing is on yet";
-  on.add(0);
-  on.add(1);
-  const NormalRowDependence off_edge = on.dependence(4);
+  on.add(0, false);
+  on.add(1, false);
+  const RowDependence off_edge = on.dependence(4);
   EXPECT_FALSE(off_edge.dependent) << "the middle is off the edge between corners 0 and 1";
-  EXPECT_TRUE(off_edge.contacts.empty() && off_edge.coefficients.empty());
-  on.add(3);
+  EXPECT_TRUE(off_edge.rows.empty() && off_edge.coefficients.empty());
+  on.add(3, false);
   EXPECT_TRUE(on.dependence(4).dependent) << "three corners span every normal motion of the face";
-  on.add(2);
-  const NormalRowDependence d = on.dependence(4);
+  on.add(2, false);
+  const RowDependence d = on.dependence(4);
   ASSERT_TRUE(d.dependent);
-  ASSERT_EQ(d.contacts.size(), 4u);
+  ASSERT_EQ(d.rows.size(), 4u);
   // The four corners depend on each other too: the smallest coefficients,
   // a quarter each, are the ones reported.
   for (double c : d.coefficients) EXPECT_NEAR(c, 0.25, 1e-9);
   EXPECT_NEAR(d.mismatch, kMiddleBump, 1e-12);
   on.remove(1);
   on.remove(2);
-  const NormalRowDependence diagonal = on.dependence(4);
+  const RowDependence diagonal = on.dependence(4);
   ASSERT_TRUE(diagonal.dependent) << "the middle lies on the diagonal from corner 0 to corner 3";
   for (double c : diagonal.coefficients) EXPECT_NEAR(c, 0.5, 1e-9);
 }
 
 // Sliding corners too: the corner switched off must stay off when Algorithm
 // 3 then updates the friction of every sliding contact that keeps its mode.
-TEST(DependentNormalRows, ACornerMakesWayForADependentViolatedRow) {
+TEST(DependentRows, ACornerMakesWayForADependentViolatedRow) {
   for (const ContactMode corners : {ContactMode::sticking, ContactMode::sliding}) {
     OwnedProblem owned = box_with_middle_contact();
     ContactProblem& problem = owned.problem;
@@ -109,7 +109,7 @@ TEST(DependentNormalRows, ACornerMakesWayForADependentViolatedRow) {
 
 // Mid-solve the multipliers are not yet the system's: the middle waits
 // for a converged evaluation instead of exchanging on them.
-TEST(DependentNormalRows, MidSolveADependentViolatedRowWaits) {
+TEST(DependentRows, MidSolveADependentViolatedRowWaits) {
   OwnedProblem owned = box_with_middle_contact();
   ContactProblem& problem = owned.problem;
   const MomentumPreconditioner P(*problem.A);
@@ -129,7 +129,97 @@ TEST(DependentNormalRows, MidSolveADependentViolatedRowWaits) {
   EXPECT_EQ(y, before);
 }
 
-TEST(DependentNormalRows, ADependentRowTheOthersAgreeWithComesOn) {
+// The impulse the contacts apply, per DoF, as their states and y say
+// (a sliding contact's friction is in its state, not in y).
+Eigen::VectorXd contact_impulse(const ContactProblem& problem, const Eigen::VectorXd& y, int n) {
+  Eigen::VectorXd out = Eigen::VectorXd::Zero(n);
+  for (size_t k = 0; k < problem.rows.size(); ++k) {
+    const ContactState& s = problem.states[k];
+    Eigen::Vector3d f = y.segment<3>(n + 3 * static_cast<int>(k));
+    if (s.mode == ContactMode::sliding) f.tail<2>() = tangent_impulse(problem.rows[k], s);
+    add_rows_transpose_times(problem.rows[k], f, out);
+  }
+  return out;
+}
+
+// Four sticking corners hold every motion of the box, so a wall contact on
+// its side depends on their tangent rows, though on no normal row. The
+// wall closing in at 1 cm/s cannot come on beside them: the corner whose
+// friction first reaches its static cone's rim along the exchange slides.
+TEST(DependentRows, AStickingCornerSlidesForAWallItsFrictionWouldHoldOff) {
+  OwnedProblem owned = rigid_box_on_ground(kFaceBox, 3.0, 0.3, 9.81, 0.01, Eigen::Vector3d::Zero(), 0.5, 0.5);
+  ContactProblem& problem = owned.problem;
+  ContactRows wall = problem.rows[0];
+  const Eigen::Matrix3d F = contact_frame(Eigen::Vector3d::UnitX());
+  const Eigen::Vector3d r(-0.5 * kFaceBox.x(), 0.05, 0.0);  // on the -x face, off the centre line
+  wall.blocks = {F, -F * skew(r)};
+  wall.rhs_normal = 0.01;
+  problem.rows.push_back(wall);
+  problem.states.emplace_back();
+  const MomentumPreconditioner P(*problem.A);
+  const int n = 6, m = 5;
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(n + 3 * m);
+  const double load[4] = {0.04, 0.01, 0.03, 0.05};
+  for (int corner = 0; corner < 4; ++corner) {
+    problem.states[corner].mode = ContactMode::sticking;
+    y[n + 3 * corner] = load[corner];
+  }
+  std::vector<Eigen::Vector3d> inverse_masses;
+  for (const ContactRows& rows : problem.rows) inverse_masses.push_back(effective_inverse_mass(rows, P));
+  const Eigen::VectorXd before = contact_impulse(problem, y, n);
+  OnRows normals_only(problem, P);
+  for (int corner = 0; corner < 4; ++corner) normals_only.add(corner, false);
+  EXPECT_FALSE(normals_only.dependence(4).dependent) << "no normal row of the corners reaches sideways";
+  ContactSolverSettings settings;
+  const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
+  EXPECT_EQ(changes.mode_changes, 2) << "the wall on, one corner sliding";
+  EXPECT_EQ(problem.states[4].mode, ContactMode::sliding);
+  EXPECT_GT(y[n + 3 * 4], 0.0);
+  int sliding = 0;
+  for (int corner = 0; corner < 4; ++corner) {
+    const ContactState& s = problem.states[corner];
+    const Eigen::Vector3d f = y.segment<3>(n + 3 * corner);
+    ASSERT_NE(s.mode, ContactMode::inactive);
+    if (s.mode == ContactMode::sliding) {
+      ++sliding;
+      EXPECT_NEAR(tangent_impulse(problem.rows[corner], s).norm(), 0.5 * f[0], 1e-12) << "on the rim";
+    } else {
+      EXPECT_LE(f.tail<2>().norm(), 0.5 * f[0] + 1e-12) << "inside the cone";
+    }
+  }
+  EXPECT_EQ(sliding, 1);
+  EXPECT_LT((contact_impulse(problem, y, n) - before).lpNorm<Eigen::Infinity>(), 1e-12);
+}
+
+// Three sticking corners hold the box still, so the fourth corner's slip is
+// theirs to decide: with the ground under it moving at 1 cm/s, its slip
+// cannot stop. Sliding against that motion, it reads as reversed, but it
+// keeps sliding instead of sticking on rows that contradict the others.
+TEST(DependentRows, ASlidingCornerTheOthersHoldStillKeepsSliding) {
+  OwnedProblem owned = rigid_box_on_ground(kFaceBox, 3.0, 0.3, 9.81, 0.01, Eigen::Vector3d::Zero(), 0.5, 0.5);
+  ContactProblem& problem = owned.problem;
+  problem.rows[3].rhs_tangent = Eigen::Vector2d(0.01, 0.0);
+  const MomentumPreconditioner P(*problem.A);
+  const int n = 6, m = 4;
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(n + 3 * m);
+  for (int corner = 0; corner < 4; ++corner) {
+    problem.states[corner].mode = ContactMode::sticking;
+    y[n + 3 * corner] = 0.03;
+  }
+  ContactState& fourth = problem.states[3];
+  fourth.mode = ContactMode::sliding;
+  fourth.lambda_kinetic = 0.03;
+  fourth.slip = Eigen::Vector2d(1.0, 0.0);  // u = -rhs_tangent at dv = 0 runs against it
+  std::vector<Eigen::Vector3d> inverse_masses;
+  for (const ContactRows& rows : problem.rows) inverse_masses.push_back(effective_inverse_mass(rows, P));
+  ContactSolverSettings settings;
+  const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
+  EXPECT_EQ(changes.mode_changes, 0);
+  EXPECT_EQ(problem.states[3].mode, ContactMode::sliding);
+  for (int corner = 0; corner < 3; ++corner) EXPECT_EQ(problem.states[corner].mode, ContactMode::sticking);
+}
+
+TEST(DependentRows, ADependentRowTheOthersAgreeWithComesOn) {
   OwnedProblem owned = box_with_middle_contact();
   ContactProblem& problem = owned.problem;
   problem.rows[4].rhs_normal = 0.0;
