@@ -163,13 +163,26 @@ std::vector<int> proposal_index(size_t contacts, const std::vector<Proposal>& pr
   return index;
 }
 
+// Sliding contact p, proposed to stick, whose slip the rows that stay on
+// decide: it slides on, its friction turned against the slip u it has, or
+// as it was where u is within epsilon_2 (the proposal withdrawn).
+void keep_sliding_along_slip(const ContactProblem& problem, const Eigen::VectorXd& y, int n, double eps2,
+                             Proposal& p) {
+  const ContactRows& rows = problem.rows[static_cast<size_t>(p.contact)];
+  p.state = problem.states[static_cast<size_t>(p.contact)];
+  p.f = y.segment<3>(n + 3 * p.contact);
+  const Eigen::Vector2d u = rows_times(rows, y.head(n)).tail<2>() - rows.rhs_tangent;
+  p.accept = u.norm() > eps2;
+  if (p.accept) p.state.slip = u.normalized();
+}
+
 // How far, delta (N s), on-row contact t's multipliers f can move along
 // the null-space direction -c delta (c: the coefficients of its normal and
 // tangent rows in row_k = sum c_t row_t) before they reach a bound of its
-// law: lambda = 0 (c_n > 0), or a sticking contact's gamma at the rim of
-// its static cone, |gamma - c_t delta| = mu_s (lambda - c_n delta), the
-// first root of that quadratic; infinity when neither is reached. Where
-// gamma and lambda vanish together the cone closes to its tip: lambda = 0.
+// law: lambda = 0 (c_n > 0), or a sticking contact's gamma leaving its
+// static cone, |gamma - c_t delta| = mu_s (lambda - c_n delta) with the
+// difference growing; infinity when neither is reached. Where gamma and
+// lambda vanish together the cone has closed to its tip: lambda = 0.
 double room_along(const ContactRows& rows, const ContactState& s, const Eigen::Vector3d& f, const Eigen::Vector3d& c,
                   bool& reaches_cone) {
   const double lambda = std::max(f[0], 0.0);
@@ -181,22 +194,22 @@ double room_along(const ContactRows& rows, const ContactState& s, const Eigen::V
                                                                      (gamma.norm() + ct.norm() * to_zero))
     return to_zero;
   const double mu = rows.mu_static;
-  // |gamma - ct d|^2 - mu^2 (lambda - c_n d)^2 = a d^2 + b d + e, e <= 0 inside the cone.
+  // g(d) = |gamma - ct d|^2 - mu^2 (lambda - c_n d)^2 = a d^2 + b d + e: the
+  // first d >= 0 where g reaches 0 rising, g'(d) = 2 a d + b > 0. Of g's two
+  // roots that is (-b + sqrt(disc)) / (2 a), computed without cancellation.
   const double a = ct.squaredNorm() - mu * mu * c[0] * c[0];
   const double b = -2.0 * gamma.dot(ct) + 2.0 * mu * mu * lambda * c[0];
   const double e = gamma.squaredNorm() - mu * mu * lambda * lambda;
+  const double disc = b * b - 4.0 * a * e;
   double rim = std::numeric_limits<double>::infinity();
-  if (e >= 0.0) {
-    rim = 0.0;
-  } else if (a != 0.0) {
-    const double disc = b * b - 4.0 * a * e;
-    if (disc >= 0.0) {
-      const double root = std::sqrt(disc);
-      for (double d : {(-b - root) / (2.0 * a), (-b + root) / (2.0 * a)})
-        if (d >= 0.0) rim = std::min(rim, d);
-    }
-  } else if (b > 0.0) {
-    rim = -e / b;
+  if (e >= 0.0 && b > 0.0) {
+    rim = 0.0;  // on or past the rim, and moving out
+  } else if (a == 0.0) {
+    if (b > 0.0) rim = std::max(-e / b, 0.0);
+  } else if (disc > 0.0) {
+    const double root = std::sqrt(disc);
+    const double exit = b <= 0.0 ? (-b + root) / (2.0 * a) : 2.0 * e / (-b - root);
+    if (exit >= 0.0) rim = exit;
   }
   if (rim > to_zero) return to_zero;
   reaches_cone = true;
@@ -260,8 +273,8 @@ bool exchange(const ContactProblem& problem, const RowDependence& d, int k, Eige
     y.segment<3>(n + 3 * t) = f;
     if (Proposal* p = proposal_of(t)) p->f = f;
   }
-  y[n + 3 * k] = delta;
-  proposals[static_cast<size_t>(index[static_cast<size_t>(k)])].f[0] = delta;
+  y[n + 3 * k] += delta;
+  proposals[static_cast<size_t>(index[static_cast<size_t>(k)])].f[0] = y[n + 3 * k];
   if (index[static_cast<size_t>(leaving)] < 0) {
     index[static_cast<size_t>(leaving)] = static_cast<int>(proposals.size());
     proposals.push_back(unchanged(problem.states[static_cast<size_t>(leaving)], y.segment<3>(n + 3 * leaving)));
@@ -322,29 +335,33 @@ void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>
     const ContactMode mode = p >= 0 && proposals[static_cast<size_t>(p)].accept
                                  ? proposals[static_cast<size_t>(p)].state.mode
                                  : problem.states[k].mode;
-    if (mode != ContactMode::inactive) on.add(static_cast<int>(k), mode == ContactMode::sticking);
+    const bool sticks = mode == ContactMode::sticking && problem.states[k].mode == ContactMode::sticking;
+    if (mode != ContactMode::inactive) on.add(static_cast<int>(k), sticks);
   }
   for (int i : sticking) {
-    const int k = proposals[static_cast<size_t>(i)].contact;
-    for (int row = 1; row <= 2; ++row) {
-      const RowDependence d = on.dependence(k, row);
-      if (d.dependent && std::abs(d.mismatch) > e.eps2) {
-        proposals[static_cast<size_t>(i)].accept = false;
-        on.add(k, false);
-        break;
-      }
+    Proposal& p = proposals[static_cast<size_t>(i)];
+    bool agrees = true;
+    for (int row = 1; row <= 2 && agrees; ++row) {
+      const RowDependence d = on.dependence(p.contact, row);
+      agrees = !d.dependent || std::abs(d.mismatch) <= e.eps2;
+    }
+    if (agrees) {
+      on.add(p.contact, true);
+    } else {
+      keep_sliding_along_slip(problem, y, n, e.eps2, p);
     }
   }
   for (int i : order) {
     const int k = proposals[static_cast<size_t>(i)].contact;
     bool waits = taken.parallel_to_taken(k);
-    if (!waits) {
-      const RowDependence d = on.dependence(k);
-      if (d.dependent && std::abs(d.mismatch) > e.eps2)
-        waits = d.mismatch < 0.0 || !e.converged || !exchange(problem, d, k, y, n, proposals, index, on);
-    }
+    // Where the on rows depend on each other too, one exchange can leave k
+    // in the span of the rest: each exchange removes rows, so this ends.
+    for (RowDependence d = on.dependence(k); !waits && d.dependent && std::abs(d.mismatch) > e.eps2;
+         d = on.dependence(k))
+      waits = d.mismatch < 0.0 || !e.converged || !exchange(problem, d, k, y, n, proposals, index, on);
     if (waits) {
       proposals[static_cast<size_t>(i)].accept = false;
+      y[n + 3 * k] = 0.0;  // what an exchange before a later wait gave it
     } else {
       taken.take(k);
       on.add(k, false);
@@ -455,7 +472,7 @@ EvaluationChanges evaluate_constraints(ContactProblem& problem, const std::vecto
     std::vector<int> changing;
     for (const Proposal& p : proposals)
       if (p.accept && p.mode_change) changing.push_back(p.contact);
-    std::sort(changing.begin(), changing.end());  // an exchange appends the row it switched off
+    std::sort(changing.begin(), changing.end());  // an exchange appends the contacts it changed
     // A change of modes changes the system that G(x) solved: the remembered pairs no longer hold.
     if (!changing.empty()) acceleration->reset();
     update_kinetic_friction(problem, inverse_masses, y, n, tangential, changing, e, *acceleration, proposals);

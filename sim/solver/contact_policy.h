@@ -10,10 +10,12 @@
 // on at rest has no slip direction and sticks at the converged evaluation;
 // one that breaks away keeps mu_static until its slip starts:
 // ContactState::impending; one still sliding when a step begins with its
-// sides at rest starts the step sticking); and an activation whose normal
-// row depends exactly on the rows that are on comes on only where their
-// right-hand sides agree, or in exchange for one of them (a dual active-set
-// ratio test; its dependence test's tolerance is rounding:
+// sides at rest starts the step sticking); and a row that depends exactly
+// on the rows that are on (normal rows, and sticking contacts' tangent rows)
+// comes on only where their right-hand sides agree: otherwise an activation
+// comes on in exchange for one of them, which switches off or slides (a dual
+// active-set ratio test), and a sliding contact about to stick keeps
+// sliding (the dependence test's tolerance is rounding:
 // docs/decisions/023-dependent-rows-exchange.md). Algorithm 3's
 // extrapolation keeps its own depth (FrictionAcceleration::kDepth).
 

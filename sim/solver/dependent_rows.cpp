@@ -6,6 +6,8 @@
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
 
+#include "sim/solver/contact_rows_ops.h"
+
 namespace recoil::sim {
 
 namespace {

@@ -1,8 +1,9 @@
 #pragma once
 // The constraint rows that will be on after an evaluation (every active
 // contact's normal row, and a sticking one's two tangent rows too), indexed
-// by DoF node, so that a proposed activation's normal row can be tested for
-// linear dependence on them. A rigid pair has six relative DoFs, so its
+// by DoF node, so that a row about to come on (an activation's normal row, a
+// contact about to stick's tangent rows) can be tested for linear dependence
+// on them. A rigid pair has six relative DoFs, so its
 // seventh row depends on the others, and so does a row of a coarse lattice
 // cell whose nodes the on rows already fix; switched on, such a row makes the
 // on rows' equalities inconsistent unless its right-hand side agrees with
@@ -14,7 +15,6 @@
 
 #include "sim/fem/momentum_preconditioner.h"
 #include "sim/solver/contact_problem.h"
-#include "sim/solver/contact_rows_ops.h"
 
 namespace recoil::sim {
 

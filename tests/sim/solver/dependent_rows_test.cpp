@@ -32,6 +32,19 @@ OwnedProblem box_with_middle_contact() {
   return owned;
 }
 
+// Contact k's normal row, against the rows on after an evaluation: either
+// independent of them or agreeing with them, so that the equalities the
+// next solve starts from have a solution.
+void expect_consistent(const ContactProblem& problem, const MomentumPreconditioner& P, int k, const char* what) {
+  OnRows on(problem, P);
+  for (size_t t = 0; t < problem.states.size(); ++t)
+    if (problem.states[t].mode != ContactMode::inactive)
+      on.add(static_cast<int>(t), problem.states[t].mode == ContactMode::sticking);
+  const RowDependence d = on.dependence(k);
+  EXPECT_TRUE(!d.dependent || std::abs(d.mismatch) <= ContactSolverSettings{}.constraint_tolerance)
+      << what << ": mismatch " << d.mismatch;
+}
+
 // J^T y's multipliers: the impulse the rows apply, per DoF.
 Eigen::VectorXd rows_impulse(const ContactProblem& problem, const Eigen::VectorXd& y, int n) {
   Eigen::VectorXd out = Eigen::VectorXd::Zero(n);
@@ -94,16 +107,22 @@ TEST(DependentRows, ACornerMakesWayForADependentViolatedRow) {
     ContactSolverSettings settings;
     const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
     const char* what = corners == ContactMode::sticking ? "sticking corners" : "sliding corners";
-    EXPECT_EQ(changes.mode_changes, 2) << what << ": the middle on, one corner off";
+    // Corner 1 (smallest lambda / c, c = 1/4 each) leaves first; the middle
+    // still lies on the diagonal from corner 0 to corner 3, and of those two
+    // (c = 1/2 each) corner 0 leaves next.
+    EXPECT_EQ(changes.mode_changes, 3) << what << ": the middle on, two corners off";
     EXPECT_NE(problem.states[4].mode, ContactMode::inactive) << what;
-    EXPECT_EQ(problem.states[1].mode, ContactMode::inactive) << what << ": the smallest lambda / c leaves";
-    EXPECT_EQ(y[n + 3 * 1], 0.0) << what;
-    EXPECT_NEAR(y[n + 3 * 4], 4.0 * load[1], 1e-12) << what;
-    for (int corner : {0, 2, 3}) {
-      EXPECT_NE(problem.states[corner].mode, ContactMode::inactive) << what;
-      EXPECT_NEAR(y[n + 3 * corner], load[corner] - load[1], 1e-12) << what;
+    for (int corner : {0, 1}) {
+      EXPECT_EQ(problem.states[corner].mode, ContactMode::inactive) << what;
+      EXPECT_EQ(y[n + 3 * corner], 0.0) << what;
     }
+    const double first = load[1], second = 2.0 * (load[0] - first);  // lambda of the middle from each exchange
+    EXPECT_NEAR(y[n + 3 * 4], 4.0 * first + second, 1e-12) << what;
+    EXPECT_NEAR(y[n + 3 * 2], load[2] - first, 1e-12) << what;
+    EXPECT_NEAR(y[n + 3 * 3], load[3] - first - 0.5 * second, 1e-12) << what;
+    for (int corner : {2, 3}) EXPECT_NE(problem.states[corner].mode, ContactMode::inactive) << what;
     EXPECT_LT((rows_impulse(problem, y, n) - before).lpNorm<Eigen::Infinity>(), 1e-12) << what;
+    expect_consistent(problem, P, 4, what);
   }
 }
 
@@ -172,7 +191,9 @@ TEST(DependentRows, AStickingCornerSlidesForAWallItsFrictionWouldHoldOff) {
   EXPECT_FALSE(normals_only.dependence(4).dependent) << "no normal row of the corners reaches sideways";
   ContactSolverSettings settings;
   const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
-  EXPECT_EQ(changes.mode_changes, 2) << "the wall on, one corner sliding";
+  // Sticking corners fix the box until only one is left: corners slide, one
+  // exchange at a time, the first to reach its cone's rim first, until the
+  // wall's row no longer depends on them.
   EXPECT_EQ(problem.states[4].mode, ContactMode::sliding);
   EXPECT_GT(y[n + 3 * 4], 0.0);
   int sliding = 0;
@@ -180,21 +201,24 @@ TEST(DependentRows, AStickingCornerSlidesForAWallItsFrictionWouldHoldOff) {
     const ContactState& s = problem.states[corner];
     const Eigen::Vector3d f = y.segment<3>(n + 3 * corner);
     ASSERT_NE(s.mode, ContactMode::inactive);
+    EXPECT_GE(f[0], 0.0);
     if (s.mode == ContactMode::sliding) {
       ++sliding;
-      EXPECT_NEAR(tangent_impulse(problem.rows[corner], s).norm(), 0.5 * f[0], 1e-12) << "on the rim";
     } else {
       EXPECT_LE(f.tail<2>().norm(), 0.5 * f[0] + 1e-12) << "inside the cone";
     }
   }
-  EXPECT_EQ(sliding, 1);
+  EXPECT_GE(sliding, 1);
+  EXPECT_EQ(changes.mode_changes, 1 + sliding) << "the wall on, the corners that slide";
   EXPECT_LT((contact_impulse(problem, y, n) - before).lpNorm<Eigen::Infinity>(), 1e-12);
+  expect_consistent(problem, P, 4, "the wall");
 }
 
 // Three sticking corners hold the box still, so the fourth corner's slip is
 // theirs to decide: with the ground under it moving at 1 cm/s, its slip
-// cannot stop. Sliding against that motion, it reads as reversed, but it
-// keeps sliding instead of sticking on rows that contradict the others.
+// cannot stop. Its friction pointing the wrong way, its slip reads as
+// reversed, but instead of sticking on rows that contradict the others it
+// keeps sliding, its friction turned against the slip it has.
 TEST(DependentRows, ASlidingCornerTheOthersHoldStillKeepsSliding) {
   OwnedProblem owned = rigid_box_on_ground(kFaceBox, 3.0, 0.3, 9.81, 0.01, Eigen::Vector3d::Zero(), 0.5, 0.5);
   ContactProblem& problem = owned.problem;
@@ -214,8 +238,9 @@ TEST(DependentRows, ASlidingCornerTheOthersHoldStillKeepsSliding) {
   for (const ContactRows& rows : problem.rows) inverse_masses.push_back(effective_inverse_mass(rows, P));
   ContactSolverSettings settings;
   const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
-  EXPECT_EQ(changes.mode_changes, 0);
+  EXPECT_EQ(changes.mode_changes, 1) << "the fourth corner's friction turned";
   EXPECT_EQ(problem.states[3].mode, ContactMode::sliding);
+  EXPECT_LT((problem.states[3].slip - Eigen::Vector2d(-1.0, 0.0)).norm(), 1e-12) << "along its slip u = (-0.01, 0)";
   for (int corner = 0; corner < 3; ++corner) EXPECT_EQ(problem.states[corner].mode, ContactMode::sticking);
 }
 
