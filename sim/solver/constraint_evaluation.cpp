@@ -163,19 +163,6 @@ std::vector<int> proposal_index(size_t contacts, const std::vector<Proposal>& pr
   return index;
 }
 
-// Sliding contact p, proposed to stick, whose slip the rows that stay on
-// decide: it slides on, its friction turned against the slip u it has, or
-// as it was where u is within epsilon_2 (the proposal withdrawn).
-void keep_sliding_along_slip(const ContactProblem& problem, const Eigen::VectorXd& y, int n, double eps2,
-                             Proposal& p) {
-  const ContactRows& rows = problem.rows[static_cast<size_t>(p.contact)];
-  p.state = problem.states[static_cast<size_t>(p.contact)];
-  p.f = y.segment<3>(n + 3 * p.contact);
-  const Eigen::Vector2d u = rows_times(rows, y.head(n)).tail<2>() - rows.rhs_tangent;
-  p.accept = u.norm() > eps2;
-  if (p.accept) p.state.slip = u.normalized();
-}
-
 // How far, delta (N s), on-row contact t's multipliers f can move along
 // the null-space direction -c delta (c: the coefficients of its normal and
 // tangent rows in row_k = sum c_t row_t) before they reach a bound of its
@@ -335,21 +322,24 @@ void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>
     const ContactMode mode = p >= 0 && proposals[static_cast<size_t>(p)].accept
                                  ? proposals[static_cast<size_t>(p)].state.mode
                                  : problem.states[k].mode;
-    const bool sticks = mode == ContactMode::sticking && problem.states[k].mode == ContactMode::sticking;
-    if (mode != ContactMode::inactive) on.add(static_cast<int>(k), sticks);
+    if (mode != ContactMode::inactive) on.add(static_cast<int>(k), mode == ContactMode::sticking);
   }
+  // Each contact about to stick is measured against all the others, so that
+  // no order among them decides which one sticks.
+  std::vector<int> rejected;
   for (int i : sticking) {
-    Proposal& p = proposals[static_cast<size_t>(i)];
-    bool agrees = true;
-    for (int row = 1; row <= 2 && agrees; ++row) {
-      const RowDependence d = on.dependence(p.contact, row);
-      agrees = !d.dependent || std::abs(d.mismatch) <= e.eps2;
+    const int k = proposals[static_cast<size_t>(i)].contact;
+    for (int row = 1; row <= 2; ++row) {
+      const RowDependence d = on.dependence(k, row);
+      if (d.dependent && std::abs(d.mismatch) > e.eps2) {
+        rejected.push_back(i);
+        break;
+      }
     }
-    if (agrees) {
-      on.add(p.contact, true);
-    } else {
-      keep_sliding_along_slip(problem, y, n, e.eps2, p);
-    }
+  }
+  for (int i : rejected) {
+    proposals[static_cast<size_t>(i)].accept = false;
+    on.add(proposals[static_cast<size_t>(i)].contact, false);
   }
   for (int i : order) {
     const int k = proposals[static_cast<size_t>(i)].contact;

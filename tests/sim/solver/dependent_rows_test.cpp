@@ -216,9 +216,8 @@ TEST(DependentRows, AStickingCornerSlidesForAWallItsFrictionWouldHoldOff) {
 
 // Three sticking corners hold the box still, so the fourth corner's slip is
 // theirs to decide: with the ground under it moving at 1 cm/s, its slip
-// cannot stop. Its friction pointing the wrong way, its slip reads as
-// reversed, but instead of sticking on rows that contradict the others it
-// keeps sliding, its friction turned against the slip it has.
+// cannot stop. Sliding against that motion, it reads as reversed, but it
+// keeps sliding instead of sticking on rows that contradict the others.
 TEST(DependentRows, ASlidingCornerTheOthersHoldStillKeepsSliding) {
   OwnedProblem owned = rigid_box_on_ground(kFaceBox, 3.0, 0.3, 9.81, 0.01, Eigen::Vector3d::Zero(), 0.5, 0.5);
   ContactProblem& problem = owned.problem;
@@ -238,9 +237,8 @@ TEST(DependentRows, ASlidingCornerTheOthersHoldStillKeepsSliding) {
   for (const ContactRows& rows : problem.rows) inverse_masses.push_back(effective_inverse_mass(rows, P));
   ContactSolverSettings settings;
   const EvaluationChanges changes = evaluate_constraints(problem, inverse_masses, y, P, settings, true);
-  EXPECT_EQ(changes.mode_changes, 1) << "the fourth corner's friction turned";
+  EXPECT_EQ(changes.mode_changes, 0);
   EXPECT_EQ(problem.states[3].mode, ContactMode::sliding);
-  EXPECT_LT((problem.states[3].slip - Eigen::Vector2d(-1.0, 0.0)).norm(), 1e-12) << "along its slip u = (-0.01, 0)";
   for (int corner = 0; corner < 3; ++corner) EXPECT_EQ(problem.states[corner].mode, ContactMode::sticking);
 }
 
