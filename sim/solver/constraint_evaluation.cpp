@@ -346,9 +346,11 @@ void hold_back(const ContactProblem& problem, const std::vector<Eigen::Vector3d>
     bool waits = taken.parallel_to_taken(k);
     // Where the on rows depend on each other too, one exchange can leave k
     // in the span of the rest: each exchange removes rows, so this ends.
-    for (RowDependence d = on.dependence(k); !waits && d.dependent && std::abs(d.mismatch) > e.eps2;
-         d = on.dependence(k))
+    while (!waits) {
+      const RowDependence d = on.dependence(k);
+      if (!d.dependent || std::abs(d.mismatch) <= e.eps2) break;
       waits = d.mismatch < 0.0 || !e.converged || !exchange(problem, d, k, y, n, proposals, index, on);
+    }
     if (waits) {
       proposals[static_cast<size_t>(i)].accept = false;
       y[n + 3 * k] = 0.0;  // what an exchange before a later wait gave it
