@@ -216,16 +216,6 @@ double room_along(const ContactRows& rows, const ContactState& s, const Eigen::V
 // body pinched from both sides).
 bool exchange(const ContactProblem& problem, const RowDependence& d, int k, Eigen::VectorXd& y, int n,
               std::vector<Proposal>& proposals, std::vector<int>& index, OnRows& on) {
-  std::vector<int> contacts;  // the contacts of d's rows, each once, with their coefficients
-  std::vector<Eigen::Vector3d> coefficients;
-  for (size_t i = 0; i < d.rows.size(); ++i) {
-    const ContactRow& t = d.rows[i];
-    if (contacts.empty() || contacts.back() != t.contact) {
-      contacts.push_back(t.contact);
-      coefficients.push_back(Eigen::Vector3d::Zero());
-    }
-    coefficients.back()[t.row] = d.coefficients[i];
-  }
   // A contact this evaluation changes is read as the change leaves it.
   const auto proposal_of = [&](int t) -> Proposal* {
     const int p = index[static_cast<size_t>(t)];
@@ -238,9 +228,9 @@ bool exchange(const ContactProblem& problem, const RowDependence& d, int k, Eige
   int leaving = -1;
   bool slides = false;
   double delta = std::numeric_limits<double>::infinity();
-  for (size_t i = 0; i < contacts.size(); ++i) {
-    const int t = contacts[i];
-    const Eigen::Vector3d& c = coefficients[i];
+  for (size_t i = 0; i < d.contacts.size(); ++i) {
+    const int t = d.contacts[i];
+    const Eigen::Vector3d& c = d.coefficients[i];
     const ContactState& now = problem.states[static_cast<size_t>(t)];
     if (now.mode == ContactMode::inactive && c[0] > 0.0) return false;
     const Proposal* p = proposal_of(t);
@@ -254,9 +244,9 @@ bool exchange(const ContactProblem& problem, const RowDependence& d, int k, Eige
     }
   }
   if (leaving < 0) return false;
-  for (size_t i = 0; i < contacts.size(); ++i) {
-    const int t = contacts[i];
-    const Eigen::Vector3d f = multipliers(t) - coefficients[i] * delta;
+  for (size_t i = 0; i < d.contacts.size(); ++i) {
+    const int t = d.contacts[i];
+    const Eigen::Vector3d f = multipliers(t) - d.coefficients[i] * delta;
     y.segment<3>(n + 3 * t) = f;
     if (Proposal* p = proposal_of(t)) p->f = f;
   }

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include <Eigen/Cholesky>
 #include <Eigen/QR>
@@ -26,9 +27,9 @@ OnRows::OnRows(const ContactProblem& problem, const MomentumPreconditioner& P)
     : m_problem(problem), m_P(P), m_on(problem.rows.size(), Off), m_whitened(problem.rows.size()),
       m_seen(problem.rows.size(), 0) {}
 
-double OnRows::right_hand_side(const ContactRow& r) const {
-  const ContactRows& rows = m_problem.rows[static_cast<size_t>(r.contact)];
-  return r.row == 0 ? rows.rhs_normal : rows.rhs_tangent[r.row - 1];
+double OnRows::right_hand_side(int k, int row) const {
+  const ContactRows& rows = m_problem.rows[static_cast<size_t>(k)];
+  return row == 0 ? rows.rhs_normal : rows.rhs_tangent[row - 1];
 }
 
 void OnRows::add(int k, bool sticking) {
@@ -78,11 +79,11 @@ RowDependence OnRows::dependence(int k, int row) {
       contacts.push_back(t);
     }
   }
-  if (contacts.empty()) return out;
-  std::vector<ContactRow>& rows = out.rows;
+  // The on rows of those contacts, as (contact, row), grouped by contact.
+  std::vector<std::pair<int, int>> rows;
   for (int t : contacts)
     for (int r = 0; r < (m_on[static_cast<size_t>(t)] == NormalAndTangents ? 3 : 1); ++r)
-      if (t != k || r < row) rows.push_back({t, r});
+      if (t != k || r < row) rows.emplace_back(t, r);
   if (rows.empty()) return out;
   // Columns: 3 per DoF node the rows touch, 6 per deformable body's rigid motions.
   std::unordered_map<int, Eigen::Index> node_column, body_column;
@@ -103,14 +104,11 @@ RowDependence OnRows::dependence(int k, int row) {
   };
   const Eigen::Index m = static_cast<Eigen::Index>(rows.size());
   Eigen::MatrixXd on_rows = Eigen::MatrixXd::Zero(columns, m);  // the on rows as columns, whitened
-  for (Eigen::Index i = 0; i < m; ++i) fill(whitened(rows[size_t(i)].contact), rows[size_t(i)].row, on_rows.col(i));
+  for (Eigen::Index i = 0; i < m; ++i) fill(whitened(rows[size_t(i)].first), rows[size_t(i)].second, on_rows.col(i));
   Eigen::VectorXd row_k = Eigen::VectorXd::Zero(columns);
   fill(whitened(k), row, row_k);
   const double own = row_k.squaredNorm();
-  if (!(own > 0.0)) {
-    rows.clear();
-    return out;
-  }
+  if (!(own > 0.0)) return out;
   // Least-squares coefficients of least norm: the on rows may depend on each other too.
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> decomposition(on_rows.rows(), on_rows.cols());
   decomposition.setThreshold(std::sqrt(kRounding));
@@ -118,14 +116,19 @@ RowDependence OnRows::dependence(int k, int row) {
   const Eigen::VectorXd c = decomposition.solve(row_k);
   const double residual = (row_k - on_rows * c).squaredNorm();
   out.dependent = residual <= kRounding * own;
-  if (!out.dependent) {
-    rows.clear();
-    return out;
-  }
+  if (!out.dependent) return out;
   const double largest = c.cwiseAbs().maxCoeff();
-  for (Eigen::Index i = 0; i < m; ++i) out.coefficients.push_back(std::abs(c[i]) > kRounding * largest ? c[i] : 0.0);
-  out.mismatch = right_hand_side({k, row});
-  for (Eigen::Index i = 0; i < m; ++i) out.mismatch -= out.coefficients[size_t(i)] * right_hand_side(rows[size_t(i)]);
+  out.mismatch = right_hand_side(k, row);
+  for (Eigen::Index i = 0; i < m; ++i) {
+    const auto [t, r] = rows[size_t(i)];
+    if (out.contacts.empty() || out.contacts.back() != t) {
+      out.contacts.push_back(t);
+      out.coefficients.push_back(Eigen::Vector3d::Zero());
+    }
+    const double coefficient = std::abs(c[i]) > kRounding * largest ? c[i] : 0.0;
+    out.coefficients.back()[r] = coefficient;
+    out.mismatch -= coefficient * right_hand_side(t, r);
+  }
   return out;
 }
 

@@ -18,19 +18,14 @@
 
 namespace recoil::sim {
 
-// One constraint row: a contact's row 0 (normal), 1 or 2 (tangents).
-struct ContactRow {
-  int contact = -1;
-  int row = 0;
-};
-
 // How a row depends on the rows that are on: row_k = sum c_t row_t to
 // rounding, and what the rows' right-hand sides then leave for k.
 struct RowDependence {
   bool dependent = false;
-  std::vector<ContactRow> rows;     // the rows t it depends on (empty when it does not)
-  std::vector<double> coefficients; // c_t, per row above; rounding-level ones are 0
-  double mismatch = 0.0;            // m/s: rhs_k - sum c_t rhs_t, how far k stays violated with every t at equality
+  std::vector<int> contacts;                  // the contacts whose on rows it depends on (empty when it does not)
+  std::vector<Eigen::Vector3d> coefficients;  // per contact above, c of its (normal, t1, t2) rows; 0 for rows
+                                              // not on and rounding-level ones
+  double mismatch = 0.0;  // m/s: rhs_k - sum c_t rhs_t, how far k stays violated with every t at equality
 };
 
 class OnRows {
@@ -61,7 +56,7 @@ class OnRows {
     std::vector<MomentumPreconditioner::ModeBlock> modes;  // per body
   };
   const WhitenedRows& whitened(int k);
-  double right_hand_side(const ContactRow& r) const;
+  double right_hand_side(int k, int row) const;
 
   const ContactProblem& m_problem;
   const MomentumPreconditioner& m_P;

@@ -62,22 +62,25 @@ TEST(DependentRows, TheMiddleOfAFaceDependsOnItsCorners) {
   on.add(1, false);
   const RowDependence off_edge = on.dependence(4);
   EXPECT_FALSE(off_edge.dependent) << "the middle is off the edge between corners 0 and 1";
-  EXPECT_TRUE(off_edge.rows.empty() && off_edge.coefficients.empty());
+  EXPECT_TRUE(off_edge.contacts.empty() && off_edge.coefficients.empty());
   on.add(3, false);
   EXPECT_TRUE(on.dependence(4).dependent) << "three corners span every normal motion of the face";
   on.add(2, false);
   const RowDependence d = on.dependence(4);
   ASSERT_TRUE(d.dependent);
-  ASSERT_EQ(d.rows.size(), 4u);
+  ASSERT_EQ(d.contacts.size(), 4u);
   // The four corners depend on each other too: the smallest coefficients,
   // a quarter each, are the ones reported.
-  for (double c : d.coefficients) EXPECT_NEAR(c, 0.25, 1e-9);
+  for (const Eigen::Vector3d& c : d.coefficients) {
+    EXPECT_NEAR(c[0], 0.25, 1e-9);
+    EXPECT_EQ(c.tail<2>(), Eigen::Vector2d::Zero()) << "the corners' tangent rows are not on";
+  }
   EXPECT_NEAR(d.mismatch, kMiddleBump, 1e-12);
   on.remove(1);
   on.remove(2);
   const RowDependence diagonal = on.dependence(4);
   ASSERT_TRUE(diagonal.dependent) << "the middle lies on the diagonal from corner 0 to corner 3";
-  for (double c : diagonal.coefficients) EXPECT_NEAR(c, 0.5, 1e-9);
+  for (const Eigen::Vector3d& c : diagonal.coefficients) EXPECT_NEAR(c[0], 0.5, 1e-9);
 }
 
 // Sliding corners too: the corner switched off must stay off when Algorithm
